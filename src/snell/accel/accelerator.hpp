@@ -1,0 +1,31 @@
+#pragma once
+// Ray queries over the whole scene. Back ends: Embree (default), brute force; own BVH, octree and grid
+// come with the speed issue. Unbounded objects (planes) are tested apart from the structure.
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "snell/scene/scene.hpp"
+
+namespace snell::accel {
+
+struct AcceleratorStats {
+  size_t objects = 0;
+  size_t unbounded_objects = 0;
+  double build_seconds = 0;
+};
+
+class Accelerator {
+ public:
+  virtual ~Accelerator() = default;
+  /// Nearest hit with t in (t_min, t_max) among objects visible to `kind`.
+  virtual bool intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
+                         scene::SurfaceHit& hit) const = 0;
+  virtual std::string_view name() const = 0;
+  virtual AcceleratorStats stats() const = 0;
+};
+
+/// `kind` is "embree" or "none" (brute force). Throws std::invalid_argument for unknown kinds.
+std::unique_ptr<Accelerator> make_accelerator(std::string_view kind, const scene::Scene& scene);
+
+}  // namespace snell::accel

@@ -1,0 +1,42 @@
+#pragma once
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "snell/geometry/shape.hpp"
+
+namespace snell::geometry {
+
+/// Triangle soup with optional per-vertex normals and uvs, shared by POV-Ray `mesh`, `mesh2` and imported
+/// meshes. Index triples refer into the vectors; `normal_indices`/`uv_indices` are empty or parallel to
+/// `faces`. `texture_indices` (per face, -1 = the mesh's own texture) select from the object's texture list.
+struct MeshData {
+  std::vector<Vec3> vertices;
+  std::vector<Vec3> normals;
+  std::vector<Vec2> uvs;
+  std::vector<std::array<int, 3>> faces;
+  std::vector<std::array<int, 3>> normal_indices;
+  std::vector<std::array<int, 3>> uv_indices;
+  std::vector<int> texture_indices;
+  /// POV-Ray `inside_vector`: with it, a closed mesh is a solid (inside test by ray parity).
+  std::optional<Vec3> inside_vector;
+};
+
+class Mesh final : public Shape {
+ public:
+  explicit Mesh(MeshData data);
+  ~Mesh() override;
+
+  Bounds3 bounds() const override;
+  bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
+  bool inside(const Vec3& p) const override;
+  std::string_view kind() const override { return "mesh"; }
+
+  const MeshData& data() const { return data_; }
+
+ private:
+  MeshData data_;
+};
+
+}  // namespace snell::geometry

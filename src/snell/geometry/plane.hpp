@@ -1,0 +1,26 @@
+#pragma once
+#include "snell/geometry/shape.hpp"
+
+namespace snell::geometry {
+
+/// POV-Ray `plane { normal, distance }`: the points p with n.p = d, n normalised as POV-Ray does
+/// (distance scaled along). The inside is the half-space the normal points away from.
+class Plane final : public Shape {
+ public:
+  Plane(const Vec3& normal, double distance);
+
+  Bounds3 bounds() const override { return Bounds3::infinite(); }
+  bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
+  bool inside(const Vec3& p) const override { return dot(normal_, p) < distance_; }
+  std::string_view kind() const override { return "plane"; }
+
+  const Vec3& normal() const { return normal_; }
+  double distance() const { return distance_; }
+
+ private:
+  Vec3 normal_;
+  double distance_;
+};
+
+}  // namespace snell::geometry

@@ -1,0 +1,49 @@
+#pragma once
+// The Shape interface: one geometric primitive in its own coordinate space. Objects (scene/object.hpp)
+// add the transform, texture and flags. Rays reaching a shape are already in its space and their
+// direction is NOT unit length (t stays the world-space parameter), so every shape must handle that.
+#include <string_view>
+#include <vector>
+
+#include "snell/math/bounds.hpp"
+#include "snell/math/ray.hpp"
+#include "snell/math/vec3.hpp"
+
+namespace snell::geometry {
+
+using math::Bounds3;
+using math::Ray;
+using math::Vec2;
+using math::Vec3;
+
+/// A crossing of a ray with a shape's surface, in shape space.
+struct LocalHit {
+  double t = 0;
+  /// Outward geometric normal in shape space (need not be unit length).
+  Vec3 normal;
+  /// Interpolated normal for smooth shading (smooth_triangle, mesh normals); zero when absent.
+  Vec3 shading_normal;
+  Vec2 uv;
+  /// Shape-specific detail (triangle index, blob component...), -1 when unused.
+  int part = -1;
+};
+
+using HitList = std::vector<LocalHit>;
+
+class Shape {
+ public:
+  virtual ~Shape() = default;
+
+  /// Bounds in shape space; `Bounds3::infinite()` for unbounded shapes such as planes.
+  virtual Bounds3 bounds() const = 0;
+  /// Nearest crossing with t in (t_min, t_max). Returns false when there is none.
+  virtual bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const = 0;
+  /// Appends every crossing with t in (t_min, t_max), in increasing t (for CSG and filtered shadows).
+  virtual void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const = 0;
+  /// Whether `p` (shape space) lies inside the solid. Open/flat shapes answer as POV-Ray does.
+  virtual bool inside(const Vec3& p) const = 0;
+  /// The POV-Ray keyword of the shape, for statistics and messages.
+  virtual std::string_view kind() const = 0;
+};
+
+}  // namespace snell::geometry

@@ -1,0 +1,20 @@
+#pragma once
+#include "snell/geometry/shape.hpp"
+
+namespace snell::geometry {
+
+/// POV-Ray `torus { major, minor }` in the xz plane around the y axis; exact quartic roots.
+class Torus final : public Shape {
+ public:
+  Torus(double major_radius, double minor_radius);
+
+  Bounds3 bounds() const override;
+  bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
+  bool inside(const Vec3& p) const override;
+  std::string_view kind() const override { return "torus"; }
+
+ private:
+};
+
+}  // namespace snell::geometry

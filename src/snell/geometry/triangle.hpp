@@ -1,0 +1,26 @@
+#pragma once
+#include <array>
+
+#include "snell/geometry/shape.hpp"
+
+namespace snell::geometry {
+
+/// POV-Ray `triangle { a, b, c }` and, with vertex normals, `smooth_triangle { a, na, b, nb, c, nc }`.
+class Triangle final : public Shape {
+ public:
+  Triangle(const Vec3& a, const Vec3& b, const Vec3& c);
+  Triangle(const Vec3& a, const Vec3& na, const Vec3& b, const Vec3& nb, const Vec3& c, const Vec3& nc);
+
+  Bounds3 bounds() const override;
+  bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
+  bool inside(const Vec3& p) const override;
+  std::string_view kind() const override { return smooth_ ? "smooth_triangle" : "triangle"; }
+
+ private:
+  std::array<Vec3, 3> v_;
+  std::array<Vec3, 3> n_{};
+  bool smooth_ = false;
+};
+
+}  // namespace snell::geometry

@@ -1,0 +1,33 @@
+#pragma once
+#include "snell/math/color.hpp"
+
+namespace snell::material {
+
+/// POV-Ray 3.7 `finish {}` with its documented defaults (POV-Ray 3.7 reference, "Finish").
+struct Finish {
+  math::Color ambient{0.1};
+  math::Color emission{0};
+  double diffuse = 0.6;
+  double brilliance = 1;
+  double crand = 0;
+  double phong = 0;
+  double phong_size = 40;
+  double specular = 0;
+  double roughness = 0.05;
+  /// `metallic`: highlights take the surface colour (0 = white highlights, 1 = fully tinted).
+  double metallic = 0;
+  /// `reflection { min max fresnel falloff exponent metallic }`; a plain `reflection c` sets min = max = c.
+  math::Color reflection_min{0};
+  math::Color reflection_max{0};
+  bool reflection_fresnel = false;
+  double reflection_falloff = 1;
+  double reflection_exponent = 1;
+  double reflection_metallic = 0;
+  bool conserve_energy = false;
+  /// Whether `ambient` was given explicitly (3.7: then it overrides, else emission/ambient rules apply).
+  bool ambient_set = false;
+
+  bool reflects() const { return reflection_max.max() > 0 || reflection_min.max() > 0; }
+};
+
+}  // namespace snell::material

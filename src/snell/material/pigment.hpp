@@ -1,0 +1,35 @@
+#pragma once
+#include "snell/material/rgbft.hpp"
+#include "snell/math/vec3.hpp"
+
+namespace snell::material {
+
+/// What a pigment sees of the surface point. `p` is in the texture's own space (the object's and the
+/// texture's transforms already undone), as POV-Ray evaluates patterns.
+struct PatternPoint {
+  math::Vec3 p;
+  math::Vec3 world_normal;
+  math::Vec2 uv;
+};
+
+/// The colour of a surface at a point: solid colours now, patterns with maps later (texture/).
+class Pigment {
+ public:
+  virtual ~Pigment() = default;
+  virtual Rgbft at(const PatternPoint& point) const = 0;
+  /// True when `at` returns the same colour everywhere (lets the integrator skip the evaluation).
+  virtual bool is_constant() const { return false; }
+};
+
+class SolidPigment final : public Pigment {
+ public:
+  explicit SolidPigment(const Rgbft& color) : color_(color) {}
+  Rgbft at(const PatternPoint&) const override { return color_; }
+  bool is_constant() const override { return true; }
+  const Rgbft& color() const { return color_; }
+
+ private:
+  Rgbft color_;
+};
+
+}  // namespace snell::material

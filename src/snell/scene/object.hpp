@@ -1,0 +1,76 @@
+#pragma once
+// An Object is what the scene holds and the accelerator indexes: a shape in its own space, the transform
+// that places it, its texture and interior, and POV-Ray's object flags.
+#include <memory>
+#include <string>
+
+#include "snell/geometry/shape.hpp"
+#include "snell/material/interior.hpp"
+#include "snell/material/texture.hpp"
+#include "snell/math/transform.hpp"
+#include "snell/scene/source_location.hpp"
+
+namespace snell::scene {
+
+using math::Ray;
+using math::Vec3;
+
+/// What a ray is for; objects flagged `no_image`, `no_reflection` or `no_shadow` are invisible to it.
+enum class RayKind { camera, reflection, refraction, shadow };
+
+struct ObjectFlags {
+  bool no_shadow = false;
+  bool no_image = false;
+  bool no_reflection = false;
+  bool hollow = false;
+  bool inverse = false;
+  bool double_illuminate = false;
+};
+
+struct Object;
+
+/// A ray-surface hit in world space, ready for shading.
+struct SurfaceHit {
+  double t = 0;
+  Vec3 point;
+  /// Unit geometric normal, outward from the solid (not yet flipped toward the ray).
+  Vec3 normal;
+  /// Unit shading normal (smooth triangles); equals `normal` when the shape has none.
+  Vec3 shading_normal;
+  math::Vec2 uv;
+  const Object* object = nullptr;
+  int part = -1;
+};
+
+struct Object {
+  std::shared_ptr<const geometry::Shape> shape;
+  /// Object space -> world space.
+  math::Transform transform;
+  /// Never null once the scene is built (the default texture stands in).
+  std::shared_ptr<const material::Texture> texture;
+  /// Null means the default interior (ior 1).
+  std::shared_ptr<const material::Interior> interior;
+  ObjectFlags flags;
+  /// The `#declare` name the object came from, if any; and where it was written.
+  std::string name;
+  SourceLocation where;
+
+  /// Nearest hit with t in (t_min, t_max) of a world ray.
+  bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
+  /// World-space bounds (infinite for unbounded shapes, or when a transform makes them so).
+  math::Bounds3 world_bounds() const;
+  bool inside(const Vec3& world_point) const;
+  bool visible_to(RayKind kind) const {
+    switch (kind) {
+      case RayKind::camera: return !flags.no_image;
+      case RayKind::reflection: return !flags.no_reflection;
+      case RayKind::refraction: return !flags.no_image;
+      case RayKind::shadow: return !flags.no_shadow;
+    }
+    return true;
+  }
+  /// Builds the world-space hit from a shape-space hit of `world_ray` (transformed into object space).
+  SurfaceHit to_world(const Ray& world_ray, const geometry::LocalHit& local) const;
+};
+
+}  // namespace snell::scene

@@ -1,0 +1,38 @@
+#pragma once
+// Entry point of the POV-Ray scene language: text in, scene::Scene out. The rest of snell never sees
+// tokens; the language never sees an integrator.
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "snell/scene/scene.hpp"
+
+namespace snell::sdl {
+
+struct ParseOptions {
+  /// Folders searched by `#include` after the scene's own folder (POV-Ray's +L).
+  std::vector<std::filesystem::path> library_paths;
+  /// Values of `image_width` / `image_height`.
+  int image_width = 320;
+  int image_height = 240;
+  double clock = 0;
+  int frame_number = 0;
+  /// `Declare=NAME=value` from the command line / ini files.
+  std::map<std::string, double> declares;
+};
+
+/// A scene error. `what()` is the whole message as printed: `file:line:col: error: message`, the source
+/// line and a caret under the column (and, inside macros or includes, the chain of call sites).
+class ParseError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Parses and builds a scene. Throws ParseError for any error in the scene text or files it names.
+scene::Scene parse_scene_file(const std::filesystem::path& path, const ParseOptions& options);
+scene::Scene parse_scene_string(const std::string& text, const std::string& file_name,
+                                const ParseOptions& options);
+
+}  // namespace snell::sdl
