@@ -2,6 +2,7 @@
 // window and ray kind; Embree only chooses which objects to test, never how they are hit.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <thread>
@@ -226,4 +227,40 @@ TEST(EmbreeAcceleratorTest, ConcurrentQueriesAgreeWithBruteForce) {
 TEST(MakeAcceleratorTest, UnknownKindThrows) {
   const scene::Scene s;
   EXPECT_THROW(accel::make_accelerator("kdtree", s), std::invalid_argument);
+}
+
+TEST(EmbreeAcceleratorTest, DegenerateRaysAndWindowsMatchBruteForce) {
+  const scene::Scene s = random_scene(8, 100);
+  const auto embree = accel::make_accelerator("embree", s);
+  const auto brute = accel::make_accelerator("none", s);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const math::Ray toward{{0, 0, -20}, {0.01, 0.02, 1}, 0};
+  expect_same_hit(*embree, *brute, toward, 5, 5, RayKind::camera);     // empty window
+  expect_same_hit(*embree, *brute, toward, 9, 3, RayKind::camera);     // reversed window
+  expect_same_hit(*embree, *brute, toward, nan, 50, RayKind::camera);  // NaN window
+  expect_same_hit(*embree, *brute, {{0, 0, 0}, {0, 0, 0}, 0}, 0, math::kInfinity, RayKind::camera);
+  expect_same_hit(*embree, *brute, {{nan, 0, 0}, {0, 0, 1}, 0}, 0, math::kInfinity, RayKind::camera);
+  expect_same_hit(*embree, *brute, {{0, 0, 0}, {0, 0, nan}, 0}, 0, math::kInfinity, RayKind::camera);
+}
+
+TEST(EmbreeAcceleratorTest, HugeObjectsBeyondFloatRangeAreStillHit) {
+  // A sphere of radius 1e20 (POV-Ray scenes use such "sky spheres") has bounds Embree cannot store.
+  scene::Scene s = random_scene(12, 20);
+  s.objects.push_back(make_object(std::make_shared<geometry::Sphere>(Vec3(0), 1e20)));
+  const auto embree = accel::make_accelerator("embree", s);
+  const auto brute = accel::make_accelerator("none", s);
+  EXPECT_EQ(embree->stats().unbounded_objects, 3u);
+  math::Pcg32 rng(3);
+  for (int i = 0; i < 500; ++i) {
+    const math::Ray ray{uniform_vec(rng, -15, 15), normalize(uniform_vec(rng, -1, 1)), 0};
+    expect_same_hit(*embree, *brute, ray, 1e-6, math::kInfinity, RayKind::camera);
+  }
+  // Alone with a small sphere, the huge one is what a ray leaving the small one meets, at t = 1e20.
+  scene::Scene alone;
+  alone.objects = {s.objects.back(), make_object(std::make_shared<geometry::Sphere>(Vec3(0), 1))};
+  const auto a = accel::make_accelerator("embree", alone);
+  scene::SurfaceHit hit;
+  ASSERT_TRUE(a->intersect({{0, 0, 0}, {0, 1, 0}, 0}, 2, math::kInfinity, RayKind::camera, hit));
+  EXPECT_DOUBLE_EQ(hit.t, 1e20);
+  EXPECT_EQ(hit.object, s.objects.back().get());
 }

@@ -17,6 +17,8 @@ using math::Bounds3;
 using math::Ray;
 using math::Vec3;
 
+constexpr double kMaxEmbreeCoordinate = 1e18;
+
 /// Nearest float not above (below) `v`, so that float boxes always contain the double ones.
 float round_down(double v) {
   const auto f = static_cast<float>(v);
@@ -27,9 +29,8 @@ float round_up(double v) {
   return static_cast<double>(f) < v ? std::nextafter(f, INFINITY) : f;
 }
 
-/// Embree's documented way to hand per-query data to callbacks: a struct beginning with
-/// RTCIntersectContext, passed to rtcIntersect1 and cast back in the callback (Embree 3 API,
-/// "RTCIntersectContext": "the context can be extended by the application").
+/// Per-query data for the callbacks: a struct beginning with RTCIntersectContext, passed to rtcIntersect1
+/// and cast back in the callback; the Embree 3 manual (rtcInitIntersectContext) documents this extension.
 struct QueryContext {
   RTCIntersectContext base;
   const Ray* ray;  // the original double-precision world ray
@@ -118,7 +119,11 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
   for (const auto& o : scene.objects) {
     const Bounds3 b = o->world_bounds();
     // Planes, and objects a transform makes unbounded or whose bounds are NaN/empty, are tested directly.
-    if (b.is_finite() && !b.empty()) {
+    // So are boxes beyond Embree's valid float range (|x| < 1.844e18, FLT_LARGE in Embree's sources): its
+    // builder silently drops primitives with bounds outside it.
+    const bool in_range = max_component(math::abs(b.lo)) < kMaxEmbreeCoordinate &&
+                          max_component(math::abs(b.hi)) < kMaxEmbreeCoordinate;
+    if (b.is_finite() && !b.empty() && in_range) {
       s.bounded.push_back(o.get());
       s.scene_bounds.unite(b);
     } else {
@@ -175,7 +180,8 @@ bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, sc
       found = true;
     }
   }
-  if (s.bounded.empty()) return found;
+  // An empty or NaN window (caught by the negated test) has no hits; Embree must not see NaN rays.
+  if (s.bounded.empty() || !(t_min < t_max)) return found;
 
   const double length = math::length(ray.direction);
   if (!(length > 0) || !std::isfinite(length) || !math::is_finite(ray.origin)) {
