@@ -1,0 +1,95 @@
+// Rays per second of each accelerator on random sphere scenes. Two ray sets bracket what a render sees:
+// coherent primary-like rays (a pinhole camera's grid) and incoherent rays (random origins and directions,
+// like diffuse bounces). Run: build/bench/snell_bench --benchmark_filter=...
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "snell/accel/accelerator.hpp"
+#include "snell/geometry/sphere.hpp"
+#include "snell/math/pcg32.hpp"
+
+namespace {
+
+using namespace snell;
+using math::Vec3;
+
+double uniform(math::Pcg32& rng, double lo, double hi) {
+  return lo + (hi - lo) * rng.next_double();
+}
+
+/// `count` spheres in a 20-unit cube, radii shrinking with count so the cube stays about equally full.
+scene::Scene sphere_scene(int count) {
+  math::Pcg32 rng(42);
+  scene::Scene s;
+  const double radius = 4.0 / std::cbrt(static_cast<double>(count));
+  for (int i = 0; i < count; ++i) {
+    auto o = std::make_shared<scene::Object>();
+    const Vec3 c{uniform(rng, -10, 10), uniform(rng, -10, 10), uniform(rng, -10, 10)};
+    o->shape = std::make_shared<geometry::Sphere>(c, radius * uniform(rng, 0.5, 1.0));
+    s.objects.push_back(std::move(o));
+  }
+  return s;
+}
+
+std::vector<math::Ray> primary_rays(int n) {
+  std::vector<math::Ray> rays;
+  const int side = static_cast<int>(std::sqrt(n));
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      const Vec3 dir{(x + 0.5) / side - 0.5, (y + 0.5) / side - 0.5, 1};
+      rays.push_back({{0, 0, -30}, normalize(dir), 0});
+    }
+  return rays;
+}
+
+std::vector<math::Ray> random_rays(int n) {
+  math::Pcg32 rng(7);
+  std::vector<math::Ray> rays;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 o{uniform(rng, -10, 10), uniform(rng, -10, 10), uniform(rng, -10, 10)};
+    const Vec3 d{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+    rays.push_back({o, normalize(d), 0});
+  }
+  return rays;
+}
+
+void run(benchmark::State& state, const char* kind, bool coherent) {
+  const scene::Scene s = sphere_scene(static_cast<int>(state.range(0)));
+  const auto accel = accel::make_accelerator(kind, s);
+  const std::vector<math::Ray> rays = coherent ? primary_rays(1 << 14) : random_rays(1 << 14);
+  size_t hits = 0;
+  for (auto _ : state) {
+    for (const math::Ray& ray : rays) {
+      scene::SurfaceHit hit;
+      hits += accel->intersect(ray, 1e-6, math::kInfinity, scene::RayKind::camera, hit);
+    }
+  }
+  benchmark::DoNotOptimize(hits);
+  state.counters["rays/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * rays.size()), benchmark::Counter::kIsRate);
+  state.counters["build_ms"] = accel->stats().build_seconds * 1e3;
+}
+
+void BM_EmbreePrimary(benchmark::State& state) {
+  run(state, "embree", true);
+}
+void BM_EmbreeRandom(benchmark::State& state) {
+  run(state, "embree", false);
+}
+void BM_BrutePrimary(benchmark::State& state) {
+  run(state, "none", true);
+}
+void BM_BruteRandom(benchmark::State& state) {
+  run(state, "none", false);
+}
+
+BENCHMARK(BM_EmbreePrimary)->RangeMultiplier(10)->Range(10, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EmbreeRandom)->RangeMultiplier(10)->Range(10, 100000)->Unit(benchmark::kMillisecond);
+// Brute force is O(objects) per ray; stop before it takes minutes.
+BENCHMARK(BM_BrutePrimary)->RangeMultiplier(10)->Range(10, 1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BruteRandom)->RangeMultiplier(10)->Range(10, 1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
