@@ -95,7 +95,8 @@ Image read_image(const fs::path& path) {
     throw ImageIoError("cannot read '" + path.string() + "': " + in->geterror());
   Image image(spec.width, spec.height);
   for (size_t p = 0; p < static_cast<size_t>(spec.width) * spec.height; ++p) {
-    for (int c = 0; c < 3; ++c) image.rgb[p * 3 + c] = pixels[p * channels + std::min(c, channels < 3 ? 0 : c)];
+    for (int c = 0; c < 3; ++c)
+      image.rgb[p * 3 + c] = pixels[p * channels + std::min(c, channels < 3 ? 0 : c)];
   }
   return image;
 }

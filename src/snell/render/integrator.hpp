@@ -27,7 +27,8 @@ class Integrator {
   virtual std::string_view name() const = 0;
 };
 
-/// `name` is "whitted". Throws std::invalid_argument for unknown names. Scene and accelerator must outlive it.
+/// `name` is "whitted". Throws std::invalid_argument for unknown names. Scene and accelerator must outlive
+/// it.
 std::unique_ptr<Integrator> make_integrator(std::string_view name, const scene::Scene& scene,
                                             const accel::Accelerator& accelerator);
 

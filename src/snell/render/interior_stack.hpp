@@ -41,6 +41,8 @@ class InteriorStack {
 };
 
 /// The index of refraction of an object's interior (1 for objects without one).
-inline double ior_of(const scene::Object* o) { return o && o->interior ? o->interior->ior : 1.0; }
+inline double ior_of(const scene::Object* o) {
+  return o && o->interior ? o->interior->ior : 1.0;
+}
 
 }  // namespace snell::render

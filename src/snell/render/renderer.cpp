@@ -41,8 +41,7 @@ double color_distance(const Color& a, const Color& b) {
 
 Renderer::Renderer(const scene::Scene& scene, const accel::Accelerator& accelerator, RenderOptions options)
     : scene_(scene), accel_(accelerator), options_(std::move(options)) {
-  if (options_.width <= 0 || options_.height <= 0)
-    throw std::invalid_argument("image size must be positive");
+  if (options_.width <= 0 || options_.height <= 0) throw std::invalid_argument("image size must be positive");
   if (options_.width > 65536 || options_.height > 65536)
     throw std::invalid_argument("image size too large (at most 65536 pixels a side)");
   if (options_.aa_depth < 1 || options_.aa_depth > 9)
@@ -109,7 +108,8 @@ RenderResult Renderer::render() const {
           for (int i = 0; i < n; ++i) {
             double dx = (i + 0.5) / n, dy = (j + 0.5) / n;
             if (options_.jitter) {
-              const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
+              const uint64_t pixel =
+                  static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
               ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(j * n + i + 1),
                                           static_cast<uint64_t>(options_.frame), options_.seed),
                            0xda3e39cb94b95bdbULL);
@@ -124,16 +124,17 @@ RenderResult Renderer::render() const {
   };
 
   auto run_pass = [&](const auto& body) {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i) {
-        if (cancelled()) {
-          stopped = true;
-          return;
-        }
-        body(tiles[i]);
-        tile_finished();
-      }
-    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t i = r.begin(); i != r.end(); ++i) {
+                          if (cancelled()) {
+                            stopped = true;
+                            return;
+                          }
+                          body(tiles[i]);
+                          tile_finished();
+                        }
+                      });
   };
 
   auto run_all = [&] {

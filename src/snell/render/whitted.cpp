@@ -40,9 +40,13 @@ Color metallic_tint(double metallic, const Color& pigment, double cos_angle) {
 }
 
 /// The transmitted colour of a surface colour: filter passes light tinted, transmit untinted.
-Color transmitted_color(const material::Rgbft& c) { return c.rgb * c.filter + Color(c.transmit); }
+Color transmitted_color(const material::Rgbft& c) {
+  return c.rgb * c.filter + Color(c.transmit);
+}
 
-double max_abs(const Color& c) { return std::max(std::fabs(c.r), std::max(std::fabs(c.g), std::fabs(c.b))); }
+double max_abs(const Color& c) {
+  return std::max(std::fabs(c.r), std::max(std::fabs(c.g), std::fabs(c.b)));
+}
 
 material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
   const material::Texture& tex = *hit.object->texture;
@@ -111,7 +115,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   const material::Finish& f = *sp.finish;
   // Opacity: 3.7 scales filter by the brightest channel (a black filter blocks); older versions do not.
   sp.opacity = scene_.settings.language_version < 3.7 ? 1.0 - pc.filter - pc.transmit
-                                                       : 1.0 - pc.filter * pc.rgb.max() - pc.transmit;
+                                                      : 1.0 - pc.filter * pc.rgb.max() - pc.transmit;
 
   const scene::Object* object = hit.object;
   const double object_ior = ior_of(object);
@@ -185,8 +189,8 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
                       level + 1, t_weight, next, context);
     } else if (auto dir = refract(ray.direction, sp.normal, eta)) {
       ++context.counters.refracted;
-      through = trace({offset_origin(sp.point, -sp.raw_normal), normalize(*dir), ray.time}, RayKind::refraction,
-                      level + 1, t_weight, next, context);
+      through = trace({offset_origin(sp.point, -sp.raw_normal), normalize(*dir), ray.time},
+                      RayKind::refraction, level + 1, t_weight, next, context);
     } else {
       tir = true;
       through = reflect(sp, level, t_weight, inside, context);
@@ -214,8 +218,8 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   return result;
 }
 
-Color WhittedIntegrator::reflect(const ShadingPoint& sp, int level, double weight, const InteriorStack& inside,
-                                 TraceContext& context) const {
+Color WhittedIntegrator::reflect(const ShadingPoint& sp, int level, double weight,
+                                 const InteriorStack& inside, TraceContext& context) const {
   const Vec3& d = sp.ray->direction;
   Vec3 r = math::reflect(d, sp.normal);
   // A perturbed normal can send the ray into the surface; fold it back as POV-Ray does (trace.cpp,
@@ -273,8 +277,8 @@ Color WhittedIntegrator::direct_light(const ShadingPoint& sp, TraceContext& cont
   return sum;
 }
 
-Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, const Vec3& dir, double distance,
-                                       Color light, TraceContext& context) const {
+Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, const Vec3& dir,
+                                       double distance, Color light, TraceContext& context) const {
   // Start on the side of the surface the light is on, so a surface never shadows itself.
   Vec3 origin = offset_origin(point, dot(normal, dir) >= 0 ? normal : -normal);
   double remaining = distance - dot(origin - point, dir);
