@@ -104,11 +104,10 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& args) {
       o.library_paths.emplace_back(rest_after(1));
     } else if (starts_with(key, "WT")) {
       o.threads = parse_int(arg, rest_after(2));
-    } else if (key[0] == 'W' && key.size() > 1 &&
-               (std::isdigit(static_cast<unsigned char>(key[1])) || key[1] == '-')) {
+    } else if (key[0] == 'W' && key.size() > 1) {
       o.width = parse_int(arg, rest_after(1));
-    } else if (key[0] == 'H' && key.size() > 1 &&
-               (std::isdigit(static_cast<unsigned char>(key[1])) || key[1] == '-')) {
+    } else if (key[0] == 'H' && key.size() > 1 && !starts_with(key, "HT") && !starts_with(key, "HN") &&
+               !starts_with(key, "HI")) {
       o.height = parse_int(arg, rest_after(1));
     } else if (key == "A" || (key[0] == 'A' && key.size() > 1 &&
                               (std::isdigit(static_cast<unsigned char>(key[1])) || key[1] == '.'))) {
