@@ -53,7 +53,7 @@ material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
   if (!tex.pigment) return {};
   if (tex.pigment->is_constant()) return tex.pigment->at({});
   material::PatternPoint pp;
-  pp.p = tex.transform.inverse_point(hit.object->transform.inverse_point(hit.point));
+  pp.p = tex.transform.inverse_point(hit.point);
   pp.world_normal = hit.normal;
   pp.uv = hit.uv;
   return tex.pigment->at(pp);
