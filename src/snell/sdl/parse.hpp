@@ -2,6 +2,7 @@
 // Entry point of the POV-Ray scene language: text in, scene::Scene out. The rest of snell never sees
 // tokens; the language never sees an integrator.
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,12 @@ struct ParseOptions {
   int frame_number = 0;
   /// `Declare=NAME=value` from the command line / ini files.
   std::map<std::string, double> declares;
+  /// Receives each warning and `#debug` text, formatted; null prints to stderr.
+  std::function<void(const std::string&)> message_sink;
+  /// Guards against runaway scenes (each breach is a ParseError at the offending line).
+  long max_while_iterations = 10'000'000;
+  int max_include_depth = 64;
+  int max_macro_depth = 256;
 };
 
 /// A scene error. `what()` is the whole message as printed: `file:line:col: error: message`, the source

@@ -1,11 +1,17 @@
-// Placeholder until the parser lands (sdl helper replaces this file).
+// The public entry points: one Parser per scene.
 #include "snell/sdl/parse.hpp"
 
+#include "snell/sdl/parser.hpp"
+
 namespace snell::sdl {
-scene::Scene parse_scene_file(const std::filesystem::path& path, const ParseOptions&) {
-  throw ParseError(path.string() + ":1:1: error: the scene parser is not built yet");
+
+scene::Scene parse_scene_file(const std::filesystem::path& path, const ParseOptions& options) {
+  return Parser(options).parse_file(path);
 }
-scene::Scene parse_scene_string(const std::string&, const std::string& file_name, const ParseOptions&) {
-  throw ParseError(file_name + ":1:1: error: the scene parser is not built yet");
+
+scene::Scene parse_scene_string(const std::string& text, const std::string& file_name,
+                                const ParseOptions& options) {
+  return Parser(options).parse_text(text, file_name);
 }
+
 }  // namespace snell::sdl

@@ -1,0 +1,341 @@
+// pigment, finish, interior, texture and transform blocks (POV-Ray 3.7 reference, "Textures",
+// "Interior", "Transformations"). Pigments are solid colours for now; patterns come with texture/.
+#include "snell/sdl/parser.hpp"
+
+namespace snell::sdl {
+
+namespace {
+
+bool is_pattern_keyword(const std::string& w) {
+  static const char* const patterns[] = {
+      "agate",     "average", "boxed",       "bozo",         "brick",           "bumps",   "cells",
+      "checker",   "crackle", "cylindrical", "density_file", "dents",           "facets",  "function",
+      "gradient",  "granite", "hexagon",     "image_map",    "julia",           "leopard", "mandel",
+      "marble",    "onion",   "pavement",    "planar",       "quilted",         "radial",  "ripples",
+      "spherical", "spiral1", "spiral2",     "spotted",      "square",          "tiling",  "triangular",
+      "waves",     "wood",    "wrinkles",    "object",       "pigment_pattern", "slope",   "aoi",
+      "cubic"};
+  for (const char* p : patterns)
+    if (w == p) return true;
+  return false;
+}
+
+}  // namespace
+
+std::optional<math::Transform> Parser::parse_transform_item() {
+  const Token t = peek();
+  if (t.kind != Token::Kind::identifier) return std::nullopt;
+  const std::string& w = t.text;
+  if (w == "translate") {
+    raw_next();
+    return math::Transform::translate(parse_vector());
+  }
+  if (w == "rotate") {
+    raw_next();
+    return math::Transform::rotate_xyz_degrees(parse_vector());
+  }
+  if (w == "scale") {
+    raw_next();
+    const scene::SourceLocation where = peek().where;
+    math::Vec3 s = parse_vector();
+    // POV-Ray 3.7 warns about a zero scale component and uses 1 instead.
+    for (int i = 0; i < 3; ++i) {
+      if (s[i] == 0) {
+        warn(where, "scale component is zero; using 1 instead");
+        s[i] = 1;
+      }
+    }
+    return math::Transform::scale(s);
+  }
+  if (w == "matrix") {
+    raw_next();
+    const scene::SourceLocation where = peek().where;
+    expect("<", "matrix");
+    double values[12];
+    for (int i = 0; i < 12; ++i) {
+      values[i] = parse_float();
+      if (i < 11) expect(",", "matrix (12 values)");
+    }
+    expect(">", "matrix");
+    const auto m = math::Transform::pov_matrix(values);
+    if (!m) fail(where, "singular matrix: it cannot be inverted");
+    return *m;
+  }
+  if (w == "transform") {
+    raw_next();
+    return parse_transform_block();
+  }
+  return std::nullopt;
+}
+
+math::Transform Parser::parse_transform_block() {
+  const Token& t = peek();
+  if (t.kind == Token::Kind::identifier) {
+    // `transform Ident` without braces.
+    if (const Value* v = lookup(t.text); v && std::holds_alternative<math::Transform>(v->data)) {
+      const math::Transform copy = std::get<math::Transform>(v->data);
+      raw_next();
+      return copy;
+    }
+  }
+  expect("{", "transform");
+  math::Transform result;
+  for (;;) {
+    const Token item = peek();
+    if (item.is_symbol("}")) {
+      raw_next();
+      return result;
+    }
+    if (item.is_word("inverse")) {
+      raw_next();
+      result = result.inverse();
+      continue;
+    }
+    if (item.kind == Token::Kind::identifier) {
+      if (const Value* v = lookup(item.text); v && std::holds_alternative<math::Transform>(v->data)) {
+        result = std::get<math::Transform>(v->data) * result;
+        raw_next();
+        continue;
+      }
+    }
+    if (auto step = parse_transform_item()) {
+      result = *step * result;
+      continue;
+    }
+    fail(item.where, "unexpected '" + item.text + "' in transform");
+  }
+}
+
+std::shared_ptr<const material::Pigment> Parser::parse_pigment_block(
+    const std::shared_ptr<const material::Pigment>& base) {
+  expect("{", "pigment");
+  std::shared_ptr<const material::Pigment> pigment = base;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      break;
+    }
+    if (t.kind == Token::Kind::identifier) {
+      if (const Value* v = lookup(t.text)) {
+        if (const auto* p = std::get_if<std::shared_ptr<const material::Pigment>>(&v->data)) {
+          pigment = *p;
+          raw_next();
+          continue;
+        }
+      }
+      if (is_pattern_keyword(t.text))
+        fail(t.where, "pattern pigment '" + t.text + "' is not supported yet (only solid colours)");
+      if (parse_transform_item()) continue;  // a solid colour looks the same however it is moved
+      if (t.text == "quick_color") {
+        raw_next();
+        parse_color();
+        continue;
+      }
+    }
+    if (starts_numeric()) {
+      pigment = std::make_shared<material::SolidPigment>(parse_color());
+      continue;
+    }
+    fail(t.where, "unexpected '" + t.text + "' in pigment");
+  }
+  return pigment ? pigment : std::make_shared<material::SolidPigment>(material::Rgbft{});
+}
+
+void Parser::parse_reflection(material::Finish& f) {
+  if (!peek().is_symbol("{")) {
+    // `reflection c`: min = max = c (the POV-Ray 3.5 form).
+    const material::Rgbft c = parse_color();
+    f.reflection_min = f.reflection_max = c.rgb;
+    return;
+  }
+  raw_next();
+  bool have_min = false;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      return;
+    }
+    if (t.is_symbol(",")) {
+      raw_next();
+      continue;
+    }
+    if (t.kind == Token::Kind::identifier) {
+      const std::string& w = t.text;
+      if (w == "fresnel") {
+        raw_next();
+        f.reflection_fresnel = parse_bool_optional(true);
+        continue;
+      }
+      if (w == "falloff") {
+        raw_next();
+        f.reflection_falloff = parse_float();
+        continue;
+      }
+      if (w == "exponent") {
+        raw_next();
+        f.reflection_exponent = parse_float();
+        continue;
+      }
+      if (w == "metallic") {
+        raw_next();
+        f.reflection_metallic = starts_numeric() ? parse_float() : 1;
+        continue;
+      }
+    }
+    if (starts_numeric()) {
+      // `{ max }` or `{ min, max }`: a single colour is both (POV-Ray 3.7 "reflection").
+      const math::Color c = parse_color().rgb;
+      if (!have_min) {
+        f.reflection_min = f.reflection_max = c;
+        have_min = true;
+      } else {
+        f.reflection_max = c;
+      }
+      continue;
+    }
+    fail(t.where, "unexpected '" + t.text + "' in reflection");
+  }
+}
+
+material::Finish Parser::parse_finish_block(const material::Finish& base) {
+  expect("{", "finish");
+  material::Finish f = base;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      return f;
+    }
+    if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in finish");
+    const std::string& w = t.text;
+    if (const Value* v = lookup(w)) {
+      if (const auto* other = std::get_if<material::Finish>(&v->data)) {
+        f = *other;
+        raw_next();
+        continue;
+      }
+    }
+    raw_next();
+    if (w == "ambient") {
+      f.ambient = parse_color().rgb;
+      f.ambient_set = true;
+    } else if (w == "emission") {
+      f.emission = parse_color().rgb;
+    } else if (w == "diffuse") {
+      if (peek().is_word("albedo")) raw_next();
+      f.diffuse = parse_float();
+      if (accept(",")) parse_float();  // back-side diffuse: not modelled yet
+    } else if (w == "brilliance") {
+      f.brilliance = parse_float();
+    } else if (w == "crand") {
+      f.crand = parse_float();
+    } else if (w == "phong") {
+      if (peek().is_word("albedo")) raw_next();
+      f.phong = parse_float();
+    } else if (w == "phong_size") {
+      f.phong_size = parse_float();
+    } else if (w == "specular") {
+      if (peek().is_word("albedo")) raw_next();
+      f.specular = parse_float();
+    } else if (w == "roughness") {
+      f.roughness = parse_float();
+    } else if (w == "metallic") {
+      f.metallic = starts_numeric() ? parse_float() : 1;
+    } else if (w == "reflection") {
+      parse_reflection(f);
+    } else if (w == "reflection_exponent") {
+      f.reflection_exponent = parse_float();
+    } else if (w == "conserve_energy") {
+      f.conserve_energy = parse_bool_optional(true);
+    } else if (w == "irid" || w == "subsurface") {
+      warn(t.where, w + " is not supported yet; ignored");
+      skip_block(w);
+    } else {
+      fail(t.where, "unknown finish keyword '" + w + "'");
+    }
+  }
+}
+
+std::shared_ptr<const material::Interior> Parser::parse_interior_block() {
+  expect("{", "interior");
+  auto interior = std::make_shared<material::Interior>();
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      return interior;
+    }
+    if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in interior");
+    const std::string& w = t.text;
+    if (const Value* v = lookup(w)) {
+      if (const auto* other = std::get_if<std::shared_ptr<const material::Interior>>(&v->data)) {
+        *interior = **other;
+        raw_next();
+        continue;
+      }
+    }
+    raw_next();
+    if (w == "ior")
+      interior->ior = parse_float();
+    else if (w == "dispersion")
+      interior->dispersion = parse_float();
+    else if (w == "dispersion_samples")
+      parse_float();
+    else if (w == "caustics")
+      interior->caustics = parse_float();
+    else if (w == "fade_distance")
+      interior->fade_distance = parse_float();
+    else if (w == "fade_power")
+      interior->fade_power = parse_float();
+    else if (w == "fade_color")
+      interior->fade_color = parse_color().rgb;
+    else if (w == "media") {
+      warn(t.where, "media is not supported yet; ignored");
+      skip_block("media");
+    } else {
+      fail(t.where, "unknown interior keyword '" + w + "'");
+    }
+  }
+}
+
+std::shared_ptr<const material::Texture> Parser::parse_texture_block() {
+  expect("{", "texture");
+  auto texture = std::make_shared<material::Texture>();
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      break;
+    }
+    if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in texture");
+    const std::string& w = t.text;
+    if (const Value* v = lookup(w)) {
+      if (const auto* other = std::get_if<std::shared_ptr<const material::Texture>>(&v->data)) {
+        *texture = **other;
+        raw_next();
+        continue;
+      }
+    }
+    if (auto step = parse_transform_item()) {
+      texture->transform = *step * texture->transform;
+      continue;
+    }
+    raw_next();
+    if (w == "pigment") {
+      texture->pigment = parse_pigment_block(texture->pigment);
+    } else if (w == "finish") {
+      texture->finish = parse_finish_block(texture->finish);
+    } else if (w == "normal") {
+      warn(t.where, "normal is not supported yet; ignored");
+      skip_block("normal");
+    } else {
+      fail(t.where, "unexpected '" + w + "' in texture");
+    }
+  }
+  if (!texture->pigment) texture->pigment = material::Texture::default_texture()->pigment;
+  return texture;
+}
+
+}  // namespace snell::sdl

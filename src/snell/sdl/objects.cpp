@@ -1,0 +1,496 @@
+// Objects: shapes, union, blob, mesh, light_source and `object { Ident }`, with their modifiers
+// (POV-Ray 3.7 reference, "Objects", "Object Modifiers", "Light Sources").
+#include <stdexcept>
+
+#include "snell/sdl/parser.hpp"
+#include "snell/sdl/shape_factory.hpp"
+
+namespace snell::sdl {
+
+namespace {
+
+bool is_shape_keyword(const std::string& w) {
+  static const char* const shapes[] = {"sphere", "plane", "box",      "cylinder",       "cone",
+                                       "disc",   "torus", "triangle", "smooth_triangle"};
+  for (const char* s : shapes)
+    if (w == s) return true;
+  return false;
+}
+
+}  // namespace
+
+std::optional<ParsedObject> Parser::parse_object_if_any() {
+  const Token t = peek();
+  if (t.kind != Token::Kind::identifier) return std::nullopt;
+  const std::string& w = t.text;
+  if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "blob" || w == "mesh" ||
+      w == "light_source" || w == "object") {
+    raw_next();
+    return parse_object(t);
+  }
+  if (w == "intersection" || w == "difference" || w == "mesh2" || w == "lathe" || w == "sor" ||
+      w == "prism" || w == "superellipsoid" || w == "height_field" || w == "isosurface" || w == "text" ||
+      w == "polygon" || w == "julia_fractal" || w == "parametric" || w == "sphere_sweep" || w == "quadric" ||
+      w == "poly" || w == "cubic" || w == "quartic" || w == "bicubic_patch" || w == "lemon" || w == "ovus")
+    fail(t.where, "the object '" + w + "' is not supported yet");
+  return std::nullopt;
+}
+
+ParsedObject Parser::parse_object(const Token& keyword) {
+  const std::string& w = keyword.text;
+  ParsedObject o;
+  if (w == "union" || w == "merge") {
+    if (w == "merge") warn(keyword.where, "merge is parsed as union for now (inner surfaces stay visible)");
+    o = parse_union(keyword);
+  } else if (w == "blob") {
+    o = parse_blob(keyword);
+  } else if (w == "mesh") {
+    o = parse_mesh(keyword);
+  } else if (w == "light_source") {
+    o = parse_light(keyword);
+  } else if (w == "object") {
+    expect("{", "object");
+    const Token& inner = peek();
+    if (inner.kind == Token::Kind::identifier) {
+      if (const Value* v = lookup(inner.text)) {
+        const auto* declared = std::get_if<ParsedObject>(&v->data);
+        if (!declared) fail(inner.where, "'" + inner.text + "' is a " + v->type_name() + ", not an object");
+        o = *declared;
+        raw_next();
+      } else if (auto nested = parse_object_if_any()) {
+        o = std::move(*nested);
+      } else {
+        fail(inner.where, "'" + inner.text + "' is not a declared object");
+      }
+    } else {
+      fail(inner.where, "expected an object identifier in object { }");
+    }
+    o.where = keyword.where;
+    parse_object_modifiers(o);
+  } else {
+    o = parse_shape(keyword);
+  }
+  return o;
+}
+
+ParsedObject Parser::parse_shape(const Token& keyword) {
+  const std::string& w = keyword.text;
+  ParsedObject o;
+  o.where = keyword.where;
+  expect("{", w.c_str());
+  const auto comma = [&] { expect(",", w.c_str()); };
+  try {
+    if (w == "sphere") {
+      const math::Vec3 c = parse_vector();
+      comma();
+      const double r = parse_float();
+      o.shape = shapes::sphere(c, r);
+    } else if (w == "plane") {
+      const scene::SourceLocation where = peek().where;
+      const math::Vec3 n = parse_vector();
+      if (length_squared(n) == 0) fail(where, "plane normal has zero length");
+      comma();
+      o.shape = shapes::plane(n, parse_float());
+    } else if (w == "box") {
+      const math::Vec3 a = parse_vector();
+      comma();
+      o.shape = shapes::box(a, parse_vector());
+    } else if (w == "cylinder") {
+      const scene::SourceLocation where = peek().where;
+      const math::Vec3 a = parse_vector();
+      comma();
+      const math::Vec3 b = parse_vector();
+      comma();
+      const double r = parse_float();
+      if (length_squared(b - a) == 0) fail(where, "cylinder base and cap are the same point");
+      bool open = false;
+      if (peek().is_word("open")) {
+        raw_next();
+        open = true;
+      }
+      o.shape = shapes::cylinder(a, b, r, open);
+    } else if (w == "cone") {
+      const scene::SourceLocation where = peek().where;
+      const math::Vec3 a = parse_vector();
+      comma();
+      const double ra = parse_float();
+      comma();
+      const math::Vec3 b = parse_vector();
+      comma();
+      const double rb = parse_float();
+      if (length_squared(b - a) == 0) fail(where, "cone base and cap are the same point");
+      bool open = false;
+      if (peek().is_word("open")) {
+        raw_next();
+        open = true;
+      }
+      o.shape = shapes::cone(a, ra, b, rb, open);
+    } else if (w == "disc") {
+      const math::Vec3 c = parse_vector();
+      comma();
+      const scene::SourceLocation where = peek().where;
+      const math::Vec3 n = parse_vector();
+      if (length_squared(n) == 0) fail(where, "disc normal has zero length");
+      comma();
+      const double r = parse_float();
+      double hole = 0;
+      if (accept(",")) hole = parse_float();
+      o.shape = shapes::disc(c, n, r, hole);
+    } else if (w == "torus") {
+      const double major = parse_float();
+      comma();
+      const double minor = parse_float();
+      if (peek().is_word("sturm")) raw_next();
+      o.shape = shapes::torus(major, minor);
+    } else if (w == "triangle") {
+      const math::Vec3 a = parse_vector();
+      comma();
+      const math::Vec3 b = parse_vector();
+      comma();
+      o.shape = shapes::triangle(a, b, parse_vector());
+    } else if (w == "smooth_triangle") {
+      math::Vec3 p[6];
+      for (int i = 0; i < 6; ++i) {
+        p[i] = parse_vector();
+        if (i < 5) comma();
+      }
+      o.shape = shapes::smooth_triangle(p[0], p[1], p[2], p[3], p[4], p[5]);
+    }
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const ParseError*>(&e)) throw;
+    fail(keyword.where, e.what());
+  }
+  parse_object_modifiers(o);
+  return o;
+}
+
+ParsedObject Parser::parse_union(const Token& keyword) {
+  ParsedObject o;
+  o.where = keyword.where;
+  expect("{", keyword.text.c_str());
+  for (;;) {
+    if (auto child = parse_object_if_any()) {
+      o.children.push_back(std::move(*child));
+      continue;
+    }
+    if (peek().is_word("split_union")) {
+      raw_next();
+      parse_float();
+      continue;
+    }
+    if (!parse_object_modifier(o)) break;
+  }
+  return o;
+}
+
+ParsedObject Parser::parse_blob(const Token& keyword) {
+  ParsedObject o;
+  o.where = keyword.where;
+  expect("{", "blob");
+  double threshold = 1;  // POV-Ray's default blob threshold
+  std::vector<geometry::BlobComponent> components;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_word("threshold")) {
+      raw_next();
+      threshold = parse_float();
+    } else if (t.is_word("component")) {
+      // Old syntax: component strength, radius, <center>.
+      raw_next();
+      geometry::BlobComponent c;
+      c.strength = parse_float();
+      expect(",", "blob component");
+      c.radius = parse_float();
+      expect(",", "blob component");
+      c.center = parse_vector();
+      components.push_back(c);
+    } else if (t.is_word("sphere") || t.is_word("cylinder")) {
+      raw_next();
+      geometry::BlobComponent c;
+      expect("{", t.text.c_str());
+      c.center = parse_vector();
+      expect(",", "blob component");
+      if (t.text == "cylinder") {
+        c.kind = geometry::BlobComponent::Kind::cylinder;
+        c.end = parse_vector();
+        expect(",", "blob component");
+      }
+      c.radius = parse_float();
+      accept(",");
+      if (peek().is_word("strength")) raw_next();
+      c.strength = parse_float();
+      for (;;) {
+        const Token m = peek();
+        if (m.is_symbol("}")) {
+          raw_next();
+          break;
+        }
+        if (auto step = parse_transform_item()) {
+          c.transform = *step * c.transform;
+          continue;
+        }
+        if (m.is_word("pigment") || m.is_word("texture") || m.is_word("finish") || m.is_word("normal")) {
+          warn(m.where, "per-component blob textures are not supported yet; ignored");
+          raw_next();
+          skip_block(m.text);
+          continue;
+        }
+        fail(m.where, "unexpected '" + m.text + "' in blob component");
+      }
+      if (c.radius <= 0) fail(t.where, "blob component radius must be positive");
+      components.push_back(c);
+    } else if (t.is_word("sturm")) {
+      raw_next();
+      parse_bool_optional(true);
+    } else if (t.is_word("hierarchy")) {
+      raw_next();
+      parse_bool_optional(true);
+    } else {
+      break;
+    }
+  }
+  if (components.empty()) fail(keyword.where, "blob has no components");
+  try {
+    o.shape = shapes::blob(threshold, std::move(components));
+  } catch (const std::runtime_error& e) {
+    fail(keyword.where, e.what());
+  }
+  parse_object_modifiers(o);
+  return o;
+}
+
+ParsedObject Parser::parse_mesh(const Token& keyword) {
+  ParsedObject o;
+  o.where = keyword.where;
+  expect("{", "mesh");
+  geometry::MeshData data;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_word("triangle") || t.is_word("smooth_triangle")) {
+      raw_next();
+      expect("{", t.text.c_str());
+      const bool smooth = t.text == "smooth_triangle";
+      std::array<int, 3> face{}, normals{};
+      for (int i = 0; i < 3; ++i) {
+        if (i > 0) expect(",", t.text.c_str());
+        face[static_cast<size_t>(i)] = static_cast<int>(data.vertices.size());
+        data.vertices.push_back(parse_vector());
+        if (smooth) {
+          expect(",", t.text.c_str());
+          normals[static_cast<size_t>(i)] = static_cast<int>(data.normals.size());
+          data.normals.push_back(parse_vector());
+        }
+      }
+      for (;;) {
+        const Token m = peek();
+        if (m.is_symbol("}")) {
+          raw_next();
+          break;
+        }
+        if (m.is_word("texture")) {
+          warn(m.where, "per-triangle mesh textures are not supported yet; ignored");
+          raw_next();
+          skip_block("texture");
+          continue;
+        }
+        fail(m.where, "unexpected '" + m.text + "' in mesh triangle");
+      }
+      data.faces.push_back(face);
+      if (smooth) {
+        if (data.normal_indices.size() < data.faces.size() - 1) {
+          // An earlier flat triangle: give it its own face normal slots pointing nowhere (zero).
+          while (data.normal_indices.size() < data.faces.size() - 1) {
+            const int z = static_cast<int>(data.normals.size());
+            data.normals.push_back({});
+            data.normal_indices.push_back({z, z, z});
+          }
+        }
+        data.normal_indices.push_back(normals);
+      } else if (!data.normal_indices.empty()) {
+        const int z = static_cast<int>(data.normals.size());
+        data.normals.push_back({});
+        data.normal_indices.push_back({z, z, z});
+      }
+    } else if (t.is_word("inside_vector")) {
+      raw_next();
+      data.inside_vector = parse_vector();
+    } else if (t.is_word("hierarchy")) {
+      raw_next();
+      parse_bool_optional(true);
+    } else {
+      break;
+    }
+  }
+  if (data.faces.empty()) fail(keyword.where, "mesh has no triangles");
+  try {
+    o.shape = shapes::mesh(std::move(data));
+  } catch (const std::runtime_error& e) {
+    fail(keyword.where, e.what());
+  }
+  parse_object_modifiers(o);
+  return o;
+}
+
+ParsedObject Parser::parse_light(const Token& keyword) {
+  ParsedObject o;
+  o.where = keyword.where;
+  expect("{", "light_source");
+  scene::Light light;
+  light.position = parse_vector();
+  accept(",");
+  light.color = parse_color().rgb;
+  bool radius_set = false, falloff_set = false;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      break;
+    }
+    if (auto step = parse_transform_item()) {
+      o.apply(*step);
+      continue;
+    }
+    if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in light_source");
+    const std::string& w = t.text;
+    if (w == "color" || w == "rgb") {
+      light.color = parse_color().rgb;
+      continue;
+    }
+    raw_next();
+    if (w == "spotlight" || w == "cylinder") {
+      light.kind = w == "spotlight" ? scene::Light::Kind::spotlight : scene::Light::Kind::cylinder;
+      // POV-Ray's cylinder light defaults are in units, not degrees (reference, "Cylindrical Lights").
+      if (w == "cylinder") {
+        if (!radius_set) light.radius = 0.75;
+        if (!falloff_set) light.falloff = 1;
+      }
+    } else if (w == "parallel") {
+      light.kind = scene::Light::Kind::parallel;
+    } else if (w == "point_at") {
+      light.point_at = parse_vector();
+    } else if (w == "radius") {
+      light.radius = parse_float();
+      radius_set = true;
+    } else if (w == "falloff") {
+      light.falloff = parse_float();
+      falloff_set = true;
+    } else if (w == "tightness") {
+      light.tightness = parse_float();
+    } else if (w == "shadowless") {
+      light.shadowless = true;
+    } else if (w == "fade_distance") {
+      light.fade_distance = parse_float();
+    } else if (w == "fade_power") {
+      light.fade_power = parse_float();
+    } else if (w == "area_light") {
+      light.area = true;
+      light.axis1 = parse_vector();
+      expect(",", "area_light");
+      light.axis2 = parse_vector();
+      expect(",", "area_light");
+      light.size1 = static_cast<int>(parse_float());
+      expect(",", "area_light");
+      light.size2 = static_cast<int>(parse_float());
+      if (light.size1 < 1 || light.size2 < 1) fail(t.where, "area_light sizes must be at least 1");
+    } else if (w == "adaptive") {
+      light.adaptive = static_cast<int>(parse_float());
+    } else if (w == "jitter") {
+      light.jitter = true;
+    } else if (w == "circular") {
+      light.circular = true;
+    } else if (w == "orient") {
+      light.orient = true;
+    } else if (w == "area_illumination") {
+      parse_bool_optional(true);
+    } else if (w == "media_interaction") {
+      light.media_interaction = parse_bool_optional(true);
+    } else if (w == "media_attenuation") {
+      light.media_attenuation = parse_bool_optional(true);
+    } else if (w == "looks_like" || w == "projected_through") {
+      warn(t.where, w + " is not supported yet; ignored");
+      skip_block(w);
+    } else if (w == "photons") {
+      skip_block(w);
+    } else {
+      fail(t.where, "unknown light_source keyword '" + w + "'");
+    }
+  }
+  // The light is in its own space; earlier transforms were applied to `o` (and fold in at flattening).
+  o.light = light;
+  return o;
+}
+
+void Parser::parse_object_modifiers(ParsedObject& object) {
+  while (parse_object_modifier(object)) {
+  }
+}
+
+void Parser::attach_pigment(ParsedObject& o, std::shared_ptr<const material::Pigment> pigment) {
+  auto texture =
+      o.texture ? std::make_shared<material::Texture>(*o.texture) : std::make_shared<material::Texture>();
+  texture->pigment = std::move(pigment);
+  o.texture = std::move(texture);
+}
+
+bool Parser::parse_object_modifier(ParsedObject& o) {
+  const Token t = peek();
+  if (t.is_symbol("}")) {
+    raw_next();
+    return false;
+  }
+  if (t.kind != Token::Kind::identifier) {
+    fail(t.where, t.kind == Token::Kind::end ? "unexpected end of file: missing '}'"
+                                             : "unexpected '" + t.text + "' in object");
+  }
+  if (auto step = parse_transform_item()) {
+    o.apply(*step);
+    return true;
+  }
+  const std::string& w = t.text;
+  raw_next();
+  auto ensure_texture = [&] {
+    auto texture =
+        o.texture ? std::make_shared<material::Texture>(*o.texture) : std::make_shared<material::Texture>();
+    if (!texture->pigment) texture->pigment = material::Texture::default_texture()->pigment;
+    return texture;
+  };
+  if (w == "pigment") {
+    const auto base = o.texture ? o.texture->pigment : nullptr;
+    attach_pigment(o, parse_pigment_block(base));
+  } else if (w == "finish") {
+    auto texture = ensure_texture();
+    texture->finish = parse_finish_block(texture->finish);
+    o.texture = std::move(texture);
+  } else if (w == "texture") {
+    // The texture starts in the object's current space: later object transforms move it too.
+    o.texture = parse_texture_block();
+  } else if (w == "interior") {
+    o.interior = parse_interior_block();
+  } else if (w == "normal") {
+    warn(t.where, "normal is not supported yet; ignored");
+    skip_block("normal");
+  } else if (w == "no_shadow") {
+    o.flags.no_shadow = true;
+  } else if (w == "no_image") {
+    o.flags.no_image = true;
+  } else if (w == "no_reflection") {
+    o.flags.no_reflection = true;
+  } else if (w == "double_illuminate") {
+    o.flags.double_illuminate = true;
+  } else if (w == "hollow") {
+    o.flags.hollow = parse_bool_optional(true);
+  } else if (w == "inverse") {
+    o.flags.inverse = !o.flags.inverse;
+  } else if (w == "bounded_by") {
+    skip_block(w);  // only an optimisation hint
+  } else if (w == "clipped_by" || w == "photons" || w == "radiosity" || w == "interior_texture") {
+    warn(t.where, w + " is not supported yet; ignored");
+    skip_block(w);
+  } else if (w == "no_radiosity") {
+  } else {
+    fail(t.where, "unexpected '" + w + "' in object");
+  }
+  return true;
+}
+
+}  // namespace snell::sdl

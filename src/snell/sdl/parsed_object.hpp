@@ -1,0 +1,37 @@
+#pragma once
+// An object while the scene is being parsed: POV-Ray's objects keep their CSG tree until the end of
+// parsing (a declared union can be reused and transformed), so the parser holds this tree and flattens it
+// into scene::Objects once the object is placed in the scene.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "snell/scene/light.hpp"
+#include "snell/scene/object.hpp"
+
+namespace snell::sdl {
+
+struct ParsedObject {
+  /// Null for a union (children hold the parts) or a light.
+  std::shared_ptr<const geometry::Shape> shape;
+  std::optional<scene::Light> light;
+  std::vector<ParsedObject> children;
+  /// Object space -> parent space.
+  math::Transform transform;
+  /// Its transform maps texture space to parent space (the object's later transforms are folded in).
+  std::shared_ptr<const material::Texture> texture;
+  std::shared_ptr<const material::Interior> interior;
+  scene::ObjectFlags flags;
+  std::string name;
+  scene::SourceLocation where;
+
+  /// Applies `t` after everything so far: the object, its texture and (for a light) its position move.
+  void apply(const math::Transform& t);
+};
+
+/// Flattens `object` into scene objects and lights: children get composed transforms and inherit the
+/// union's texture, interior and flags where they have none of their own.
+void flatten(const ParsedObject& object, std::vector<std::shared_ptr<const scene::Object>>& objects,
+             std::vector<scene::Light>& lights);
+
+}  // namespace snell::sdl

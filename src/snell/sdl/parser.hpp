@@ -1,0 +1,155 @@
+#pragma once
+// The recursive-descent parser and evaluator. Like POV-Ray it has no syntax tree: directives, macros and
+// expressions are evaluated as tokens arrive and scene items are built straight into scene::Scene.
+// The member functions are spread over files by concern: token_source.cpp (token stack, directives),
+// expressions.cpp (floats, vectors, colours, strings), materials.cpp, objects.cpp, scene_items.cpp.
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "snell/sdl/diagnostics.hpp"
+#include "snell/sdl/parse.hpp"
+#include "snell/sdl/value.hpp"
+
+namespace snell::sdl {
+
+class Parser {
+ public:
+  explicit Parser(const ParseOptions& options);
+
+  scene::Scene parse_file(const std::filesystem::path& path);
+  scene::Scene parse_text(const std::string& text, const std::string& file_name);
+
+ private:
+  // ---- token source (token_source.cpp) ----
+  struct Frame {
+    enum class Kind { file, include, macro };
+    Kind kind = Kind::file;
+    std::shared_ptr<const std::vector<Token>> tokens;
+    size_t pos = 0;
+    std::filesystem::path folder;  // for #include search
+    scene::SourceLocation call_site;
+    double saved_version = 0;
+  };
+  struct Cond {
+    enum class Kind { if_, while_, switch_, macro_call };
+    Kind kind = Kind::if_;
+    size_t frame = 0;
+    size_t resume_pos = 0;  // #while: the condition's first token
+    long iterations = 0;
+    scene::SourceLocation where;
+  };
+
+  void push_file(const std::filesystem::path& path, Frame::Kind kind, const scene::SourceLocation& site);
+  std::shared_ptr<const std::vector<Token>> tokens_of(const std::string& name, const std::string& text);
+  /// The next token with no directive processing (finished include files are left).
+  const Token& raw_peek();
+  Token raw_next();
+  /// The next token after processing directives and expanding macro calls.
+  const Token& peek();
+  Token next();
+  /// Lookahead for an operator or `;` after a value: only the directives that close a block
+  /// (#else, #elseif, a macro's or #if's #end) are processed, so a value is stored before the
+  /// directives after it run.
+  const Token& peek_after_value();
+  void handle_directive(const Token& directive);
+  void directive_declare(const Token& directive, bool local);
+  void directive_if(const Token& directive, bool condition);
+  void directive_else(const Token& directive);
+  void directive_end(const Token& directive);
+  void directive_while(const Token& directive);
+  void directive_switch(const Token& directive);
+  void directive_macro(const Token& directive);
+  void directive_include(const Token& directive);
+  void invoke_macro(const Token& name, const std::shared_ptr<const Macro>& macro);
+  void end_macro();
+  /// Skips raw tokens to the directive (one of `targets`) that closes the current block at this nesting
+  /// level; returns it (already consumed).
+  Token skip_to(std::initializer_list<const char*> targets, const Token& opener);
+  /// Skips a `{ ... }` block whose `{` is next.
+  void skip_block(const std::string& what);
+  void check_frame_end();
+
+  // ---- symbols ----
+  const Value* lookup(const std::string& name) const;
+  void declare(const std::string& name, Value value, bool local);
+
+  // ---- diagnostics ----
+  [[noreturn]] void fail(const scene::SourceLocation& where, const std::string& message) const;
+  void warn(const scene::SourceLocation& where, const std::string& message) const;
+  void message(const std::string& text) const;
+  std::vector<ChainStep> chain() const;
+
+  // ---- expressions (expressions.cpp) ----
+  Numeric parse_numeric();
+  double parse_float();
+  math::Vec3 parse_vector();
+  /// A float or vector, promoted to a colour (POV-Ray's colour expression with rgb/red/... keywords).
+  material::Rgbft parse_color();
+  std::string parse_string();
+  bool parse_bool_optional(bool if_absent);
+  bool starts_string();
+  bool starts_numeric();
+  Value parse_rvalue();
+  Numeric parse_ternary();
+  Numeric parse_or();
+  Numeric parse_and();
+  Numeric parse_comparison();
+  Numeric parse_additive();
+  Numeric parse_multiplicative();
+  Numeric parse_unary();
+  Numeric parse_postfix();
+  Numeric parse_primary();
+  Numeric parse_color_keywords();
+  Numeric parse_function(const Token& name);
+  void expect(const char* symbol, const char* context);
+  Token expect_identifier(const char* context);
+  bool accept(const char* symbol);
+
+  // ---- materials (materials.cpp) ----
+  std::shared_ptr<const material::Pigment> parse_pigment_block(
+      const std::shared_ptr<const material::Pigment>& base);
+  material::Finish parse_finish_block(const material::Finish& base);
+  std::shared_ptr<const material::Interior> parse_interior_block();
+  std::shared_ptr<const material::Texture> parse_texture_block();
+  void parse_reflection(material::Finish& finish);
+  /// `translate v`, `rotate v`, `scale v`, `matrix <..>`, `transform {..}` when one is next.
+  std::optional<math::Transform> parse_transform_item();
+  math::Transform parse_transform_block();
+
+  // ---- objects (objects.cpp) ----
+  std::optional<ParsedObject> parse_object_if_any();
+  ParsedObject parse_object(const Token& keyword);
+  ParsedObject parse_shape(const Token& keyword);
+  ParsedObject parse_union(const Token& keyword);
+  ParsedObject parse_blob(const Token& keyword);
+  ParsedObject parse_mesh(const Token& keyword);
+  ParsedObject parse_light(const Token& keyword);
+  void parse_object_modifiers(ParsedObject& object);
+  bool parse_object_modifier(ParsedObject& object);
+  void attach_pigment(ParsedObject& object, std::shared_ptr<const material::Pigment> pigment);
+
+  // ---- scene items (scene_items.cpp) ----
+  void parse_scene_items();
+  scene::CameraSpec parse_camera(const scene::CameraSpec& base);
+  void parse_global_settings();
+  void parse_background();
+  scene::Scene finish_scene();
+
+  ParseOptions options_;
+  SourceTexts texts_;
+  std::map<std::string, std::shared_ptr<const std::vector<Token>>> token_cache_;
+  std::vector<Frame> frames_;
+  std::vector<Cond> conds_;
+  std::vector<std::map<std::string, Value>> scopes_;
+  int macro_depth_ = 0;
+  double version_ = 3.7;
+  bool in_vector_ = false;
+  bool assumed_gamma_seen_ = false;
+  scene::Scene scene_;
+};
+
+}  // namespace snell::sdl

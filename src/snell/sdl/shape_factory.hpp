@@ -1,0 +1,30 @@
+#pragma once
+// The one place where the language constructs geometry. Until every shape's implementation has landed,
+// a shape whose .cpp is absent from this checkout is reported as unavailable instead of failing the link.
+#include <memory>
+#include <vector>
+
+#include "snell/geometry/blob.hpp"
+#include "snell/geometry/mesh.hpp"
+#include "snell/geometry/shape.hpp"
+
+namespace snell::sdl::shapes {
+
+using ShapePtr = std::shared_ptr<const geometry::Shape>;
+using math::Vec3;
+
+/// Each throws std::runtime_error when that shape is not built into this checkout.
+ShapePtr sphere(const Vec3& center, double radius);
+ShapePtr plane(const Vec3& normal, double distance);
+ShapePtr box(const Vec3& a, const Vec3& b);
+ShapePtr cylinder(const Vec3& base, const Vec3& cap, double radius, bool open);
+ShapePtr cone(const Vec3& base, double base_radius, const Vec3& cap, double cap_radius, bool open);
+ShapePtr disc(const Vec3& center, const Vec3& normal, double radius, double hole_radius);
+ShapePtr torus(double major, double minor);
+ShapePtr triangle(const Vec3& a, const Vec3& b, const Vec3& c);
+ShapePtr smooth_triangle(const Vec3& a, const Vec3& na, const Vec3& b, const Vec3& nb, const Vec3& c,
+                         const Vec3& nc);
+ShapePtr mesh(geometry::MeshData data);
+ShapePtr blob(double threshold, std::vector<geometry::BlobComponent> components);
+
+}  // namespace snell::sdl::shapes
