@@ -3,7 +3,10 @@
 namespace snell::accel {
 
 BruteForce::BruteForce(const scene::Scene& scene) {
-  for (const auto& o : scene.objects) objects_.push_back(o.get());
+  for (const auto& o : scene.objects) {
+    objects_.push_back(o.get());
+    if (!o->world_bounds().is_finite()) ++stats_.unbounded_objects;
+  }
   stats_.objects = objects_.size();
 }
 

@@ -3,10 +3,12 @@
 
 #include "snell/accel/accelerator.hpp"
 #include "snell/accel/brute_force.hpp"
+#include "snell/accel/embree_accelerator.hpp"
 
 namespace snell::accel {
 
 std::unique_ptr<Accelerator> make_accelerator(std::string_view kind, const scene::Scene& scene) {
+  if (kind == "embree") return std::make_unique<EmbreeAccelerator>(scene);
   if (kind == "none") return std::make_unique<BruteForce>(scene);
   throw std::invalid_argument("unknown accelerator '" + std::string(kind) + "' (expected embree or none)");
 }
