@@ -166,6 +166,19 @@ TEST(EmbreeAccelerator, FindsGrazingHitsOnBoundingBoxFaces) {
   }
 }
 
+TEST(EmbreeAccelerator, DirectionsOutsideFloatRangeStillHit) {
+  // Directions that underflow or overflow a float cannot go to Embree; t stays the caller's parameter,
+  // so the sphere at z = 5, radius 1 is met at t = 4 / |d|.
+  scene::Scene s;
+  s.objects.push_back(testing::make_object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 5), 1)));
+  const EmbreeAccelerator embree(s);
+  for (const double len : {1e-50, 1e40}) {
+    scene::SurfaceHit h;
+    ASSERT_TRUE(embree.intersect(Ray{Vec3(0), Vec3(0, 0, len)}, 0, kInf, RayKind::camera, h)) << len;
+    EXPECT_NEAR(h.t * len, 4, 1e-12) << len;
+  }
+}
+
 TEST(EmbreeAccelerator, EmptySceneHasNoHits) {
   const scene::Scene s;
   const EmbreeAccelerator embree(s);
