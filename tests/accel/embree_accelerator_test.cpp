@@ -179,6 +179,26 @@ TEST(EmbreeAccelerator, DirectionsOutsideFloatRangeStillHit) {
   }
 }
 
+TEST(EmbreeAccelerator, ObjectsBeyondFloatRangeAreTestedDirectly) {
+  // A sphere scaled past float range cannot be an Embree box; it must still be found, and the ordinary
+  // objects beside it must still match brute force.
+  scene::Scene s = random_scene(51);
+  s.objects.push_back(testing::make_object(
+      std::make_shared<geometry::Sphere>(Vec3(0), 1),
+      math::Transform::translate(Vec3(0, 0, 5e40)) * math::Transform::scale(Vec3(1e39))));
+  const EmbreeAccelerator embree(s);
+  const BruteForce brute(s);
+  EXPECT_EQ(embree.stats().unbounded_objects, 2u);
+  scene::SurfaceHit h;
+  ASSERT_TRUE(embree.intersect(Ray{Vec3(0, 0, 1e41), Vec3(0, 0, -1)}, 0, kInf, RayKind::camera, h));
+  EXPECT_EQ(h.object, s.objects.back().get());
+  EXPECT_NEAR(h.t / 4.9e40, 1, 1e-12);  // from z = 1e41 down to the top of the sphere, 5.1e40
+  math::Pcg32 rng(4);
+  Comparison c;
+  for (int i = 0; i < 2000; ++i) c.compare(embree, brute, random_ray(rng, {}), 1e-6, kInf, RayKind::camera);
+  EXPECT_EQ(c.mismatches, 0);
+}
+
 TEST(EmbreeAccelerator, EmptySceneHasNoHits) {
   const scene::Scene s;
   const EmbreeAccelerator embree(s);

@@ -114,8 +114,12 @@ FloatBox padded_box(const math::Bounds3& b, double pad) {
   return f;
 }
 
-bool is_finite(float x) {
-  return std::isfinite(x);
+/// Whether Embree can hold the box: finite, non-empty and well inside float range (planes, and objects
+/// that transforms make huge, are tested directly instead).
+bool fits_float(const math::Bounds3& b) {
+  constexpr double kFloatSafe = 1e30;
+  return b.is_finite() && !b.empty() && max_component(abs(b.lo)) < kFloatSafe &&
+         max_component(abs(b.hi)) < kFloatSafe;
 }
 
 }  // namespace
@@ -126,31 +130,22 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : embree_(std::m
   double scene_size = 0;
   for (const auto& o : scene.objects) {
     const math::Bounds3 b = o->world_bounds();
-    if (!b.is_finite() || b.empty()) {
+    if (!fits_float(b)) {
       unbounded_.push_back(o.get());
       continue;
     }
     bounded_.push_back(o.get());
     bounds.push_back(b);
-    for (int a = 0; a < 3; ++a)
-      scene_size = std::max({scene_size, std::abs(b.lo[a]), std::abs(b.hi[a]), b.hi[a] - b.lo[a]});
+    scene_size =
+        std::max({scene_size, max_component(abs(b.lo)), max_component(abs(b.hi)), max_component(b.extent())});
   }
-  // Objects too large for float bounds also go to the direct list.
   const double pad = kRelativePad * scene_size + std::numeric_limits<float>::min();
-  std::vector<const scene::Object*> kept;
-  for (size_t i = 0; i < bounded_.size(); ++i) {
-    const FloatBox f = padded_box(bounds[i], pad);
-    if (!is_finite(f.lo[0]) || !is_finite(f.lo[1]) || !is_finite(f.lo[2]) || !is_finite(f.hi[0]) ||
-        !is_finite(f.hi[1]) || !is_finite(f.hi[2])) {
-      unbounded_.push_back(bounded_[i]);
-      continue;
-    }
-    kept.push_back(bounded_[i]);
+  for (const math::Bounds3& b : bounds) {
+    const FloatBox f = padded_box(b, pad);
     embree_->boxes.push_back(f);
     embree_->scene_bounds.unite(
         math::Bounds3(math::Vec3(f.lo[0], f.lo[1], f.lo[2]), math::Vec3(f.hi[0], f.hi[1], f.hi[2])));
   }
-  bounded_ = std::move(kept);
 
   Embree& e = *embree_;
   e.device = rtcNewDevice(nullptr);
