@@ -1,14 +1,10 @@
-// Rays per second of each accelerator on a random sphere scene, for camera-like coherent rays (a pinhole
-// grid from one eye point) and incoherent ones (random origins and directions, like diffuse bounces).
-// Run: build/bench/snell_bench --benchmark_filter=Accel
+// Rays per second of each accelerator on random sphere scenes. Two ray sets bracket what a render sees:
+// coherent primary-like rays (a pinhole camera's grid) and incoherent rays (random origins and directions,
+// like diffuse bounces). Run: build/bench/snell_bench --benchmark_filter=...
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <limits>
-#include <map>
 #include <memory>
-#include <string>
-#include <utility>
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
@@ -17,92 +13,83 @@
 
 namespace {
 
-using snell::math::Pcg32;
-using snell::math::Ray;
-using snell::math::Vec3;
+using namespace snell;
+using math::Vec3;
 
-constexpr double kSceneHalfSize = 10;
-constexpr int kRaysPerBatch = 4096;
-
-double uniform(Pcg32& rng, double lo, double hi) {
+double uniform(math::Pcg32& rng, double lo, double hi) {
   return lo + (hi - lo) * rng.next_double();
 }
 
-/// `count` spheres spread in a cube, radii chosen so the scene stays moderately dense at any count.
-const snell::scene::Scene& sphere_scene(int count) {
-  static std::map<int, snell::scene::Scene> cache;
-  auto [it, inserted] = cache.try_emplace(count);
-  if (!inserted) return it->second;
-  Pcg32 rng(static_cast<uint64_t>(count));
-  const double r_max = 2 * kSceneHalfSize / std::cbrt(static_cast<double>(count));
+/// `count` spheres in a 20-unit cube, radii shrinking with count so the cube stays about equally full.
+scene::Scene sphere_scene(int count) {
+  math::Pcg32 rng(42);
+  scene::Scene s;
+  const double radius = 4.0 / std::cbrt(static_cast<double>(count));
   for (int i = 0; i < count; ++i) {
-    const Vec3 c(uniform(rng, -kSceneHalfSize, kSceneHalfSize), uniform(rng, -kSceneHalfSize, kSceneHalfSize),
-                 uniform(rng, -kSceneHalfSize, kSceneHalfSize));
-    auto o = std::make_shared<snell::scene::Object>();
-    o->shape = std::make_shared<snell::geometry::Sphere>(c, uniform(rng, 0.1, 0.5) * r_max);
-    it->second.objects.push_back(std::move(o));
+    auto o = std::make_shared<scene::Object>();
+    const Vec3 c{uniform(rng, -10, 10), uniform(rng, -10, 10), uniform(rng, -10, 10)};
+    o->shape = std::make_shared<geometry::Sphere>(c, radius * uniform(rng, 0.5, 1.0));
+    s.objects.push_back(std::move(o));
   }
-  return it->second;
+  return s;
 }
 
-/// A 64x64 pinhole grid from in front of the scene, row by row as a tile renderer would trace them.
-std::vector<Ray> coherent_rays() {
-  std::vector<Ray> rays;
-  const Vec3 eye(0, 0, -3 * kSceneHalfSize);
-  for (int y = 0; y < 64; ++y)
-    for (int x = 0; x < 64; ++x) rays.push_back({eye, normalize(Vec3((x - 31.5) / 96, (y - 31.5) / 96, 1))});
+std::vector<math::Ray> primary_rays(int n) {
+  std::vector<math::Ray> rays;
+  const int side = static_cast<int>(std::sqrt(n));
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      const Vec3 dir{(x + 0.5) / side - 0.5, (y + 0.5) / side - 0.5, 1};
+      rays.push_back({{0, 0, -30}, normalize(dir), 0});
+    }
   return rays;
 }
 
-std::vector<Ray> incoherent_rays() {
-  std::vector<Ray> rays;
-  Pcg32 rng(7);
-  while (rays.size() < kRaysPerBatch) {
-    const Vec3 d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-    if (length_squared(d) > 1 || length_squared(d) < 1e-6) continue;
-    const Vec3 o(uniform(rng, -kSceneHalfSize, kSceneHalfSize), uniform(rng, -kSceneHalfSize, kSceneHalfSize),
-                 uniform(rng, -kSceneHalfSize, kSceneHalfSize));
-    rays.push_back({o, normalize(d)});
+std::vector<math::Ray> random_rays(int n) {
+  math::Pcg32 rng(7);
+  std::vector<math::Ray> rays;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 o{uniform(rng, -10, 10), uniform(rng, -10, 10), uniform(rng, -10, 10)};
+    const Vec3 d{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+    rays.push_back({o, normalize(d), 0});
   }
   return rays;
 }
 
-void trace(benchmark::State& state, const char* kind, const std::vector<Ray>& rays) {
-  const auto accel = snell::accel::make_accelerator(kind, sphere_scene(static_cast<int>(state.range(0))));
-  int64_t hits = 0;
+void run(benchmark::State& state, const char* kind, bool coherent) {
+  const scene::Scene s = sphere_scene(static_cast<int>(state.range(0)));
+  const auto accel = accel::make_accelerator(kind, s);
+  const std::vector<math::Ray> rays = coherent ? primary_rays(1 << 14) : random_rays(1 << 14);
+  size_t hits = 0;
   for (auto _ : state) {
-    for (const Ray& r : rays) {
-      snell::scene::SurfaceHit hit;
-      hits += accel->intersect(r, 1e-6, std::numeric_limits<double>::infinity(),
-                               snell::scene::RayKind::camera, hit);
+    for (const math::Ray& ray : rays) {
+      scene::SurfaceHit hit;
+      hits += accel->intersect(ray, 1e-6, math::kInfinity, scene::RayKind::camera, hit);
     }
   }
   benchmark::DoNotOptimize(hits);
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(rays.size()));
-  state.counters["hit_fraction"] =
-      static_cast<double>(hits) / static_cast<double>(state.iterations() * static_cast<int64_t>(rays.size()));
+  state.counters["rays/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * rays.size()), benchmark::Counter::kIsRate);
+  state.counters["build_ms"] = accel->stats().build_seconds * 1e3;
 }
 
-void BM_AccelCoherent(benchmark::State& state, const char* kind) {
-  static const std::vector<Ray> rays = coherent_rays();
-  trace(state, kind, rays);
+void BM_EmbreePrimary(benchmark::State& state) {
+  run(state, "embree", true);
+}
+void BM_EmbreeRandom(benchmark::State& state) {
+  run(state, "embree", false);
+}
+void BM_BrutePrimary(benchmark::State& state) {
+  run(state, "none", true);
+}
+void BM_BruteRandom(benchmark::State& state) {
+  run(state, "none", false);
 }
 
-void BM_AccelIncoherent(benchmark::State& state, const char* kind) {
-  static const std::vector<Ray> rays = incoherent_rays();
-  trace(state, kind, rays);
-}
-
-void BM_AccelBuild(benchmark::State& state) {
-  const auto& scene = sphere_scene(static_cast<int>(state.range(0)));
-  for (auto _ : state) benchmark::DoNotOptimize(snell::accel::make_accelerator("embree", scene));
-  state.SetItemsProcessed(state.iterations() * state.range(0));
-}
+BENCHMARK(BM_EmbreePrimary)->RangeMultiplier(10)->Range(10, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EmbreeRandom)->RangeMultiplier(10)->Range(10, 100000)->Unit(benchmark::kMillisecond);
+// Brute force is O(objects) per ray; stop before it takes minutes.
+BENCHMARK(BM_BrutePrimary)->RangeMultiplier(10)->Range(10, 1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BruteRandom)->RangeMultiplier(10)->Range(10, 1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
-
-BENCHMARK_CAPTURE(BM_AccelCoherent, embree, "embree")->RangeMultiplier(10)->Range(100, 100000);
-BENCHMARK_CAPTURE(BM_AccelCoherent, none, "none")->RangeMultiplier(10)->Range(100, 10000);
-BENCHMARK_CAPTURE(BM_AccelIncoherent, embree, "embree")->RangeMultiplier(10)->Range(100, 100000);
-BENCHMARK_CAPTURE(BM_AccelIncoherent, none, "none")->RangeMultiplier(10)->Range(100, 10000);
-BENCHMARK(BM_AccelBuild)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);

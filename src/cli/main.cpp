@@ -1,6 +1,9 @@
-// Placeholder until the CLI lands (render helper replaces this file).
-#include <cstdio>
-int main() {
-  std::puts("snell " SNELL_VERSION);
-  return 0;
+// The `snell` program (docs/cli.md).
+#include <string>
+#include <vector>
+
+#include "cli/app.hpp"
+
+int main(int argc, char** argv) {
+  return snell::cli::run_app(std::vector<std::string>(argv + 1, argv + argc));
 }

@@ -1,13 +1,18 @@
 #include "snell/accel/brute_force.hpp"
 
+#include <chrono>
+
 namespace snell::accel {
 
 BruteForce::BruteForce(const scene::Scene& scene) {
+  const auto start = std::chrono::steady_clock::now();
   for (const auto& o : scene.objects) {
     objects_.push_back(o.get());
-    if (!o->world_bounds().is_finite()) ++stats_.unbounded_objects;
+    const math::Bounds3 b = o->world_bounds();
+    if (!b.is_finite() || b.empty()) ++stats_.unbounded_objects;
   }
   stats_.objects = objects_.size();
+  stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool BruteForce::intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,

@@ -5,45 +5,40 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
 
 namespace snell::accel {
+
 namespace {
 
-constexpr float kFloatInf = std::numeric_limits<float>::infinity();
+using math::Bounds3;
+using math::Ray;
+using math::Vec3;
 
-float round_down(double x) {
-  return std::nextafter(static_cast<float>(x), -kFloatInf);
+constexpr double kMaxEmbreeCoordinate = 1e18;
+
+/// Nearest float not above (below) `v`, so that float boxes always contain the double ones.
+float round_down(double v) {
+  const auto f = static_cast<float>(v);
+  return static_cast<double>(f) > v ? std::nextafter(f, -INFINITY) : f;
 }
-float round_up(double x) {
-  return std::nextafter(static_cast<float>(x), kFloatInf);
+float round_up(double v) {
+  const auto f = static_cast<float>(v);
+  return static_cast<double>(f) < v ? std::nextafter(f, INFINITY) : f;
 }
 
-/// Embree's float traversal sees a rounded copy of each double ray, so boxes are widened by this fraction
-/// of the scene's size. The float ray starts inside the scene box (see `intersect`), so its error is a few
-/// float ulps (~1.2e-7) of the scene size; 4e-6 leaves a wide margin at a negligible cost in culling.
-constexpr double kRelativePad = 4e-6;
-
-struct FloatBox {
-  float lo[3];
-  float hi[3];
-};
-
-/// Per-query state. Embree hands the intersect callback the RTCIntersectContext pointer we passed to
-/// rtcIntersect1; putting that context first lets the callback reach the rest (Embree 3 API docs,
-/// RTCIntersectContext: "extend the intersection context with additional data").
+/// Per-query data for the callbacks: a struct beginning with RTCIntersectContext, passed to rtcIntersect1
+/// and cast back in the callback; the Embree 3 manual (rtcInitIntersectContext) documents this extension.
 struct QueryContext {
-  RTCIntersectContext rtc;
-  const scene::Object* const* objects;
-  const math::Ray* ray;
+  RTCIntersectContext base;
+  const Ray* ray;  // the original double-precision world ray
   double t_min;
-  /// Current far end: the nearest hit so far, or the caller's t_max.
-  double t_max;
-  /// Ray parameter of the float ray's origin along the double ray.
-  double t_offset;
+  double t_max;    // shrinks to the best hit so far
+  double t_shift;  // world t of the float ray's origin (see EmbreeAccelerator::intersect)
+  double length;   // |ray.direction|: Embree's t is world distance from the shifted origin
+  double pad;
   scene::RayKind kind;
   scene::SurfaceHit* hit;
   bool found;
@@ -51,196 +46,191 @@ struct QueryContext {
 
 }  // namespace
 
-struct EmbreeAccelerator::Embree {
+struct EmbreeAccelerator::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  std::vector<FloatBox> boxes;
-  /// Padded world bounds of all bounded objects, in double.
-  math::Bounds3 scene_bounds;
-  std::mutex error_mutex;
-  std::string error;
+  std::vector<const scene::Object*> bounded;
+  std::vector<const scene::Object*> unbounded;
+  Bounds3 scene_bounds;  // union of the bounded objects' boxes, padded
+  double pad = 0;        // absolute padding of every box, world units
 
-  ~Embree() {
+  std::mutex error_mutex;
+  std::string error;  // first error Embree reported, empty when none
+
+  ~Impl() {
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
   }
 
-  /// Embree reports errors through this callback, from inside its own C API; an exception may not cross
-  /// that boundary, so the message is kept and `check` throws it once the API call has returned.
+  // An exception must not unwind through Embree's C frames, so the callback only records the message
+  // and `check` throws it once control is back in our code.
   static void on_error(void* user, RTCError code, const char* message) {
-    auto* self = static_cast<Embree*>(user);
+    auto* self = static_cast<Impl*>(user);
     const std::lock_guard lock(self->error_mutex);
     if (self->error.empty())
       self->error =
-          "Embree error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : "");
+          "embree error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : "");
+  }
+  void check(const char* what) {
+    std::string message;
+    {
+      const std::lock_guard lock(error_mutex);
+      message = error;
+    }
+    if (!message.empty()) throw std::runtime_error(std::string(what) + ": " + message);
   }
 
-  void check(const char* what) {
-    const std::lock_guard lock(error_mutex);
-    if (!error.empty()) throw std::runtime_error(std::string(what) + ": " + error);
+  static void bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* self = static_cast<const Impl*>(args->geometryUserPtr);
+    const Bounds3 b = self->bounded[args->primID]->world_bounds();
+    RTCBounds* out = args->bounds_o;
+    out->lower_x = round_down(b.lo.x - self->pad);
+    out->lower_y = round_down(b.lo.y - self->pad);
+    out->lower_z = round_down(b.lo.z - self->pad);
+    out->upper_x = round_up(b.hi.x + self->pad);
+    out->upper_y = round_up(b.hi.y + self->pad);
+    out->upper_z = round_up(b.hi.z + self->pad);
+  }
+
+  static void intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;  // rtcIntersect1 always passes N = 1
+    auto* q = reinterpret_cast<QueryContext*>(args->context);
+    const auto* self = static_cast<const Impl*>(args->geometryUserPtr);
+    const scene::Object* object = self->bounded[args->primID];
+    if (!object->visible_to(q->kind)) return;
+    if (!object->intersect(*q->ray, q->t_min, q->t_max, *q->hit)) return;
+    q->t_max = q->hit->t;
+    q->found = true;
+    // Shrink Embree's float tfar so it culls boxes beyond the hit, conservatively: a box can be entered up
+    // to `pad` earlier along the float ray than the double surface point it contains.
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, 1);
+    float& tfar = RTCRayN_tfar(ray, 1, 0);
+    tfar = std::min(tfar, round_up((q->t_max - q->t_shift) * q->length * (1 + 1e-6) + q->pad));
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, 1);
+    RTCHitN_geomID(hit, 1, 0) = args->geomID;
+    RTCHitN_primID(hit, 1, 0) = args->primID;
   }
 };
 
-namespace {
-
-void bounds_callback(const RTCBoundsFunctionArguments* args) {
-  const auto& boxes = *static_cast<const std::vector<FloatBox>*>(args->geometryUserPtr);
-  const FloatBox& b = boxes[args->primID];
-  *args->bounds_o = {b.lo[0], b.lo[1], b.lo[2], 0.0f, b.hi[0], b.hi[1], b.hi[2], 0.0f};
-}
-
-/// Intersects one object in double precision and, on a nearer hit, shortens the float ray so Embree culls
-/// farther nodes (Embree 3 docs, RTC_GEOMETRY_TYPE_USER: the callback updates tfar and the hit itself).
-void intersect_callback(const RTCIntersectFunctionNArguments* args) {
-  if (args->N != 1 || !args->valid[0]) return;  // rtcIntersect1 only: a single ray
-  auto* ctx = reinterpret_cast<QueryContext*>(args->context);
-  const scene::Object* object = ctx->objects[args->primID];
-  if (!object->visible_to(ctx->kind)) return;
-  if (!object->intersect(*ctx->ray, ctx->t_min, ctx->t_max, *ctx->hit)) return;
-  ctx->t_max = ctx->hit->t;
-  ctx->found = true;
-  auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
-  rayhit->ray.tfar = std::max(round_up(ctx->hit->t - ctx->t_offset), rayhit->ray.tnear);
-  rayhit->hit.geomID = args->geomID;
-  rayhit->hit.primID = args->primID;
-}
-
-FloatBox padded_box(const math::Bounds3& b, double pad) {
-  FloatBox f{};
-  for (int a = 0; a < 3; ++a) {
-    f.lo[a] = round_down(b.lo[a] - pad);
-    f.hi[a] = round_up(b.hi[a] + pad);
-  }
-  return f;
-}
-
-/// Whether Embree can hold the box: finite, non-empty and well inside float range (planes, and objects
-/// that transforms make huge, are tested directly instead).
-bool fits_float(const math::Bounds3& b) {
-  constexpr double kFloatSafe = 1e30;
-  return b.is_finite() && !b.empty() && max_component(abs(b.lo)) < kFloatSafe &&
-         max_component(abs(b.hi)) < kFloatSafe;
-}
-
-}  // namespace
-
-EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : embree_(std::make_unique<Embree>()) {
+EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<math::Bounds3> bounds;
-  double scene_size = 0;
+  Impl& s = *impl_;
+
   for (const auto& o : scene.objects) {
-    const math::Bounds3 b = o->world_bounds();
-    if (!fits_float(b)) {
-      unbounded_.push_back(o.get());
-      continue;
+    const Bounds3 b = o->world_bounds();
+    // Planes, and objects a transform makes unbounded or whose bounds are NaN/empty, are tested directly.
+    // So are boxes beyond Embree's valid float range (|x| < 1.844e18, FLT_LARGE in Embree's sources): its
+    // builder silently drops primitives with bounds outside it.
+    const bool in_range = max_component(math::abs(b.lo)) < kMaxEmbreeCoordinate &&
+                          max_component(math::abs(b.hi)) < kMaxEmbreeCoordinate;
+    if (b.is_finite() && !b.empty() && in_range) {
+      s.bounded.push_back(o.get());
+      s.scene_bounds.unite(b);
+    } else {
+      s.unbounded.push_back(o.get());
     }
-    bounded_.push_back(o.get());
-    bounds.push_back(b);
-    scene_size =
-        std::max({scene_size, max_component(abs(b.lo)), max_component(abs(b.hi)), max_component(b.extent())});
   }
-  const double pad = kRelativePad * scene_size + std::numeric_limits<float>::min();
-  for (const math::Bounds3& b : bounds) {
-    const FloatBox f = padded_box(b, pad);
-    embree_->boxes.push_back(f);
-    embree_->scene_bounds.unite(
-        math::Bounds3(math::Vec3(f.lo[0], f.lo[1], f.lo[2]), math::Vec3(f.hi[0], f.hi[1], f.hi[2])));
+  // The float ray Embree walks starts inside the scene box (see intersect), so its distance from the double
+  // ray stays below a few float ulps of the scene's magnitude; padding every box by 2^-18 of that magnitude
+  // (about 30 ulps) keeps each double hit inside its float box.
+  if (!s.bounded.empty()) {
+    const double scale =
+        std::max(max_component(math::abs(s.scene_bounds.lo)), max_component(math::abs(s.scene_bounds.hi)));
+    s.pad = std::max(scale * 0x1p-18, 1e-30);
+    s.scene_bounds = Bounds3(s.scene_bounds.lo - Vec3(s.pad), s.scene_bounds.hi + Vec3(s.pad));
   }
 
-  Embree& e = *embree_;
-  e.device = rtcNewDevice(nullptr);
-  if (!e.device)
-    throw std::runtime_error("Embree: cannot create device (error " +
+  s.device = rtcNewDevice(nullptr);
+  if (!s.device)
+    throw std::runtime_error("embree: cannot create device (error " +
                              std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
-  rtcSetDeviceErrorFunction(e.device, &Embree::on_error, &e);
-  e.scene = rtcNewScene(e.device);
-  e.check("rtcNewScene");
-  // ROBUST: traversal never misses a box because of its own float rounding (Embree 3 docs, RTCSceneFlags).
-  rtcSetSceneFlags(e.scene, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(e.scene, RTC_BUILD_QUALITY_HIGH);
-  if (!bounded_.empty()) {
-    RTCGeometry geometry = rtcNewGeometry(e.device, RTC_GEOMETRY_TYPE_USER);
-    e.check("rtcNewGeometry");
-    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(bounded_.size()));
-    rtcSetGeometryUserData(geometry, &e.boxes);
-    rtcSetGeometryBoundsFunction(geometry, &bounds_callback, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, &intersect_callback);
+  rtcSetDeviceErrorFunction(s.device, &Impl::on_error, &s);
+  s.scene = rtcNewScene(s.device);
+  // ROBUST: watertight, conservative box tests (Embree API, RTC_SCENE_FLAG_ROBUST), so padding is the only
+  // error budget we reason about. HIGH: a full SAH build; render time dwarfs the build.
+  rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(s.scene, RTC_BUILD_QUALITY_HIGH);
+  if (!s.bounded.empty()) {
+    RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(s.bounded.size()));
+    rtcSetGeometryUserData(geometry, &s);
+    rtcSetGeometryBoundsFunction(geometry, &Impl::bounds, &s);
+    rtcSetGeometryIntersectFunction(geometry, &Impl::intersect);
     rtcCommitGeometry(geometry);
-    rtcAttachGeometry(e.scene, geometry);
+    rtcAttachGeometry(s.scene, geometry);
     rtcReleaseGeometry(geometry);
-    e.check("building the Embree geometry");
   }
-  rtcCommitScene(e.scene);
-  e.check("rtcCommitScene");
+  rtcCommitScene(s.scene);
+  s.check("embree: building the scene");
 
   stats_.objects = scene.objects.size();
-  stats_.unbounded_objects = unbounded_.size();
+  stats_.unbounded_objects = s.unbounded.size();
   stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 EmbreeAccelerator::~EmbreeAccelerator() = default;
 
-bool EmbreeAccelerator::intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
+bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, scene::RayKind kind,
                                   scene::SurfaceHit& hit) const {
+  const Impl& s = *impl_;
   bool found = false;
-  for (const scene::Object* o : unbounded_) {
+  for (const scene::Object* o : s.unbounded) {
     if (o->visible_to(kind) && o->intersect(ray, t_min, t_max, hit)) {
       t_max = hit.t;
       found = true;
     }
   }
-  if (bounded_.empty()) return found;
+  // An empty or NaN window (caught by the negated test) has no hits; Embree must not see NaN rays.
+  if (s.bounded.empty() || !(t_min < t_max)) return found;
 
-  // Start the float ray where the double ray enters the scene box: its origin then has the scene's
-  // magnitude, which bounds the rounding error the box padding must cover, and t_min < 0 needs no
-  // special case (Embree requires tnear >= 0).
-  double t0 = t_min;
-  double t1 = t_max;
-  if (!embree_->scene_bounds.clip(ray, t0, t1)) return found;
-  const math::Vec3 origin = ray.at(t0);
-
-  QueryContext ctx;
-  rtcInitIntersectContext(&ctx.rtc);
-  if (kind == scene::RayKind::camera) ctx.rtc.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  ctx.objects = bounded_.data();
-  ctx.ray = &ray;
-  ctx.t_min = t_min;
-  ctx.t_max = t_max;
-  ctx.t_offset = t0;
-  ctx.kind = kind;
-  ctx.hit = &hit;
-  ctx.found = false;
-
-  RTCRayHit rayhit{};
-  rayhit.ray.org_x = static_cast<float>(origin.x);
-  rayhit.ray.org_y = static_cast<float>(origin.y);
-  rayhit.ray.org_z = static_cast<float>(origin.z);
-  rayhit.ray.dir_x = static_cast<float>(ray.direction.x);
-  rayhit.ray.dir_y = static_cast<float>(ray.direction.y);
-  rayhit.ray.dir_z = static_cast<float>(ray.direction.z);
-  rayhit.ray.tnear = 0.0f;
-  rayhit.ray.tfar = std::isfinite(t1) ? round_up(t1 - t0) : kFloatInf;
-  rayhit.ray.time = static_cast<float>(ray.time);
-  rayhit.ray.mask = ~0u;
-  rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-
-  const float dir_len2 = rayhit.ray.dir_x * rayhit.ray.dir_x + rayhit.ray.dir_y * rayhit.ray.dir_y +
-                         rayhit.ray.dir_z * rayhit.ray.dir_z;
-  const bool float_ray_ok = std::isfinite(dir_len2) && dir_len2 > 0 && std::isfinite(rayhit.ray.org_x) &&
-                            std::isfinite(rayhit.ray.org_y) && std::isfinite(rayhit.ray.org_z) &&
-                            !std::isnan(rayhit.ray.tfar);
-  if (float_ray_ok) {
-    rtcIntersect1(embree_->scene, &ctx.rtc, &rayhit);
-    return found || ctx.found;
-  }
-  // A direction float cannot represent (over- or underflow): test every object directly.
-  for (const scene::Object* o : bounded_) {
-    if (o->visible_to(kind) && o->intersect(ray, t_min, t_max, hit)) {
-      t_max = hit.t;
-      found = true;
+  const double length = math::length(ray.direction);
+  if (!(length > 0) || !std::isfinite(length) || !math::is_finite(ray.origin)) {
+    // Nothing Embree can walk; fall back to testing every object, still in double precision.
+    for (const scene::Object* o : s.bounded) {
+      if (o->visible_to(kind) && o->intersect(ray, t_min, t_max, hit)) {
+        t_max = hit.t;
+        found = true;
+      }
     }
+    return found;
   }
-  return found;
+
+  // Start the float ray where the double ray enters the scene box, not at the (possibly distant) camera:
+  // float rounding of the origin then scales with the scene, which the box padding covers.
+  double t0 = t_min, t1 = t_max;
+  if (!s.scene_bounds.clip(ray, t0, t1)) return found;
+  const Vec3 origin = ray.at(t0);
+  const Vec3 direction = ray.direction / length;
+
+  QueryContext q{};
+  rtcInitIntersectContext(&q.base);
+  if (kind == scene::RayKind::camera) q.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  q.ray = &ray;
+  q.t_min = t_min;
+  q.t_max = t_max;
+  q.t_shift = t0;
+  q.length = length;
+  q.pad = s.pad;
+  q.kind = kind;
+  q.hit = &hit;
+  q.found = false;
+
+  RTCRayHit rh{};
+  rh.ray.org_x = static_cast<float>(origin.x);
+  rh.ray.org_y = static_cast<float>(origin.y);
+  rh.ray.org_z = static_cast<float>(origin.z);
+  rh.ray.dir_x = static_cast<float>(direction.x);
+  rh.ray.dir_y = static_cast<float>(direction.y);
+  rh.ray.dir_z = static_cast<float>(direction.z);
+  rh.ray.tnear = 0;
+  rh.ray.tfar = round_up((t1 - t0) * length * (1 + 1e-6) + s.pad);
+  rh.ray.time = static_cast<float>(ray.time);
+  rh.ray.mask = ~0u;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(s.scene, &q.base, &rh);
+  return found || q.found;
 }
 
 }  // namespace snell::accel

@@ -1,7 +1,7 @@
 #pragma once
-// Embree 3 as the ray-query structure: every bounded object is one primitive of an Embree user geometry,
-// intersected by our own double-precision code; Embree only builds and traverses the BVH in float.
-// Embree's header stays in the .cpp (it is large and slows every build that would include it).
+// Embree 3 back end. Embree only builds and walks the BVH over padded float boxes; every surface test is
+// Object::intersect in double precision, so Embree decides which objects to try, never what is hit.
+// <embree3/rtcore.h> stays in the .cpp (pimpl) so that including this header costs nothing.
 #include <memory>
 #include <vector>
 
@@ -11,25 +11,22 @@ namespace snell::accel {
 
 class EmbreeAccelerator final : public Accelerator {
  public:
-  /// The scene must outlive the accelerator. Throws std::runtime_error with Embree's message on failure.
+  /// Builds the BVH. Throws std::runtime_error with Embree's message when Embree reports an error.
   explicit EmbreeAccelerator(const scene::Scene& scene);
   ~EmbreeAccelerator() override;
   EmbreeAccelerator(const EmbreeAccelerator&) = delete;
   EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
 
-  /// Safe to call from many threads at once (Embree allows concurrent traversal of a committed scene).
+  /// Safe to call from many threads at once (rtcIntersect1 on a committed scene is read-only).
   bool intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
                  scene::SurfaceHit& hit) const override;
   std::string_view name() const override { return "embree"; }
   AcceleratorStats stats() const override { return stats_; }
 
+  struct Impl;
+
  private:
-  struct Embree;
-  std::unique_ptr<Embree> embree_;
-  /// Objects in Embree, indexed by primitive id.
-  std::vector<const scene::Object*> bounded_;
-  /// Objects whose world bounds are not finite (planes...): tested directly on every ray.
-  std::vector<const scene::Object*> unbounded_;
+  std::unique_ptr<Impl> impl_;
   AcceleratorStats stats_;
 };
 

@@ -4,8 +4,8 @@
 
 namespace snell::material {
 
-/// What a pigment sees of the surface point. `p` is in the texture's own space (the object's and the
-/// texture's transforms already undone), as POV-Ray evaluates patterns.
+/// What a pigment sees of the surface point. `p` is in the texture's own space (the world point taken back
+/// through Texture::transform), as POV-Ray evaluates patterns.
 struct PatternPoint {
   math::Vec3 p;
   math::Vec3 world_normal;

@@ -7,8 +7,9 @@
 
 namespace snell::material {
 
-/// POV-Ray `texture { pigment normal finish }`. `transform` maps texture space to object space: it holds
-/// the texture's own transforms plus those applied to the object after the texture was attached.
+/// POV-Ray `texture { pigment normal finish }`. `transform` maps texture space to WORLD space: it holds the
+/// texture's own transforms plus every transform applied to the object after the texture was attached, so
+/// a pattern moves with its object exactly as in POV-Ray (which evaluates textures at the world point).
 struct Texture {
   std::shared_ptr<const Pigment> pigment;
   Finish finish;

@@ -1,0 +1,48 @@
+#pragma once
+// Everything the `snell` command was asked to do, whichever syntax it came in (snell's own
+// `snell render ...` or POV-Ray's `+I... +W... +A...`).
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace snell::cli {
+
+/// A bad command line (exit code 2). The message is one line.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct CliOptions {
+  std::filesystem::path input;
+  std::filesystem::path output;  // empty: the scene's name with .png, in the current folder
+  int width = 800;               // POV-Ray 3.7's defaults without an ini file
+  int height = 600;
+  bool antialias = false;
+  double aa_threshold = 0.3;
+  int aa_depth = 3;
+  bool jitter = false;
+  double jitter_amount = 1.0;
+  int threads = 0;
+  std::string accel = "auto";  // auto: embree when built, else brute force
+  int bits = 8;
+  /// Output format by extension, used when the output name has none (POV-Ray +FN/+FE/+FH).
+  std::string extension = ".png";
+  bool quiet = false;
+  bool stats = false;
+  std::vector<std::filesystem::path> library_paths;
+  std::map<std::string, double> declares;
+  /// Warnings found while reading the command line (unknown or unsupported flags), printed unless quiet.
+  std::vector<std::string> warnings;
+};
+
+/// POV-Ray style: `+Iscene.pov +Oout.png +W640 +H480 +A0.3 +R3 +J +Ldir -D +WT4`, plus snell's
+/// `--quiet`, `--stats`, `--threads N`, `--accel NAME`. Unknown flags become warnings. Throws UsageError.
+CliOptions parse_pov_arguments(const std::vector<std::string>& args);
+
+/// Checks values common to both syntaxes and fills in the default output name. Throws UsageError.
+void validate(CliOptions& options);
+
+}  // namespace snell::cli

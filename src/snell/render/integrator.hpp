@@ -1,0 +1,35 @@
+#pragma once
+// An Integrator turns a camera ray into a colour. Implementations: `whitted` (POV-Ray 3.7 compatible);
+// `path` comes later. They read the immutable scene and accelerator; all mutable state is in TraceContext.
+#include <memory>
+#include <string_view>
+
+#include "snell/accel/accelerator.hpp"
+#include "snell/math/color.hpp"
+#include "snell/math/pcg32.hpp"
+#include "snell/math/ray.hpp"
+#include "snell/render/ray_counters.hpp"
+#include "snell/scene/scene.hpp"
+
+namespace snell::render {
+
+/// Per-thread scratch for tracing: the sample's random numbers and the ray counters.
+struct TraceContext {
+  math::Pcg32 rng;
+  RayCounters counters;
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  /// Radiance arriving along a camera ray (unit direction).
+  virtual math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context) const = 0;
+  virtual std::string_view name() const = 0;
+};
+
+/// `name` is "whitted". Throws std::invalid_argument for unknown names. Scene and accelerator must outlive
+/// it.
+std::unique_ptr<Integrator> make_integrator(std::string_view name, const scene::Scene& scene,
+                                            const accel::Accelerator& accelerator);
+
+}  // namespace snell::render

@@ -1,0 +1,25 @@
+#pragma once
+// The ray from a surface point towards a light and the light's colour arriving there before shadows:
+// distance fade and spotlight/cylinder cones (POV-Ray 3.7 reference, "Light Source": fade_distance,
+// fade_power, spotlight radius/falloff/tightness, cylinder, parallel).
+#include "snell/math/color.hpp"
+#include "snell/math/vec3.hpp"
+#include "snell/scene/light.hpp"
+
+namespace snell::render {
+
+struct LightRay {
+  /// Unit direction from the point towards the light.
+  math::Vec3 direction;
+  /// Distance along `direction` within which objects cast shadows.
+  double distance = 0;
+  /// Light colour after fade and cone attenuation (black outside a cone).
+  math::Color color;
+};
+
+LightRay light_ray(const scene::Light& light, const math::Vec3& point);
+
+/// POV-Ray's smooth step between `low` and `high` for spotlight edges: 0 below, 1 above, 3t^2-2t^3 between.
+double cone_spline(double low, double high, double x);
+
+}  // namespace snell::render

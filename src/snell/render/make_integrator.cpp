@@ -1,0 +1,15 @@
+#include <stdexcept>
+#include <string>
+
+#include "snell/render/integrator.hpp"
+#include "snell/render/whitted.hpp"
+
+namespace snell::render {
+
+std::unique_ptr<Integrator> make_integrator(std::string_view name, const scene::Scene& scene,
+                                            const accel::Accelerator& accelerator) {
+  if (name == "whitted") return std::make_unique<WhittedIntegrator>(scene, accelerator);
+  throw std::invalid_argument("unknown integrator '" + std::string(name) + "' (expected whitted)");
+}
+
+}  // namespace snell::render

@@ -1,0 +1,303 @@
+#include "snell/render/whitted.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "snell/render/light_ray.hpp"
+#include "snell/render/optics.hpp"
+
+namespace snell::render {
+
+using math::Color;
+using math::Ray;
+using math::Vec3;
+using scene::RayKind;
+
+namespace {
+
+/// POV-Ray's EPSILON for "nearly zero" comparisons in trace.cpp.
+constexpr double kEpsilon = 1e-10;
+/// Relative size of the surface offset: intersection routines in double lose a few digits (quadric roots,
+/// transforms), so 1e-9 of the coordinates' magnitude stays well above their error and far below detail.
+constexpr double kRelativeOffset = 1e-9;
+constexpr double kAbsoluteOffset = 1e-9;
+
+Color pow_color(const Color& c, double e) {
+  return {std::pow(std::max(0.0, c.r), e), std::pow(std::max(0.0, c.g), e), std::pow(std::max(0.0, c.b), e)};
+}
+
+/// POV-Ray's empirical Fresnel-like curve used to tint metallic highlights and reflections by the surface
+/// colour less at grazing angles (trace.cpp, ComputeMetallic; [DB 9/94]).
+double metallic_fresnel(double cos_angle) {
+  const double x = std::fabs(std::acos(std::clamp(cos_angle, -1.0, 1.0))) / (0.5 * 3.14159265358979323846);
+  const double f = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
+  return std::clamp(f, 0.0, 1.0);
+}
+
+Color metallic_tint(double metallic, const Color& pigment, double cos_angle) {
+  const double f = metallic_fresnel(cos_angle);
+  return Color(1) + (metallic * (1 - f)) * (pigment - Color(1));
+}
+
+/// The transmitted colour of a surface colour: filter passes light tinted, transmit untinted.
+Color transmitted_color(const material::Rgbft& c) {
+  return c.rgb * c.filter + Color(c.transmit);
+}
+
+double max_abs(const Color& c) {
+  return std::max(std::fabs(c.r), std::max(std::fabs(c.g), std::fabs(c.b)));
+}
+
+material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
+  const material::Texture& tex = *hit.object->texture;
+  if (!tex.pigment) return {};
+  if (tex.pigment->is_constant()) return tex.pigment->at({});
+  material::PatternPoint pp;
+  pp.p = tex.transform.inverse_point(hit.point);
+  pp.world_normal = hit.normal;
+  pp.uv = hit.uv;
+  return tex.pigment->at(pp);
+}
+
+}  // namespace
+
+Vec3 offset_origin(const Vec3& p, const Vec3& side) {
+  const double scale = kAbsoluteOffset + kRelativeOffset * max_component(abs(p));
+  return p + (dot(side, side) > 0 ? normalize(side) : side) * scale;
+}
+
+struct WhittedIntegrator::ShadingPoint {
+  const Ray* ray;
+  const scene::SurfaceHit* hit;
+  const material::Finish* finish;
+  Vec3 point;
+  /// Geometric and shading normals, both turned to face the incoming ray.
+  Vec3 raw_normal;
+  Vec3 normal;
+  material::Rgbft pigment;
+  /// How much of the surface's own colour shows (POV-Ray's "att": less when transparent).
+  double opacity = 1;
+};
+
+WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)
+    : scene_(scene), accel_(accelerator) {}
+
+Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context) const {
+  ++context.counters.camera;
+  return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context);
+}
+
+Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double weight,
+                               const InteriorStack& inside, TraceContext& context) const {
+  if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return Color(0);
+  scene::SurfaceHit hit;
+  if (!accel_.intersect(ray, 0.0, math::kInfinity, kind, hit)) return scene_.background.rgb;
+  return shade(ray, hit, level, weight, inside, context);
+}
+
+Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int level, double weight,
+                               const InteriorStack& inside, TraceContext& context) const {
+  ShadingPoint sp;
+  sp.ray = &ray;
+  sp.hit = &hit;
+  sp.finish = &hit.object->texture->finish;
+  sp.point = hit.point;
+  sp.raw_normal = hit.normal;
+  sp.normal = hit.shading_normal;
+  // POV-Ray shades the side facing the viewer (trace.cpp, ComputeOneTextureColour flips the normal).
+  if (dot(sp.raw_normal, ray.direction) > 0) {
+    sp.raw_normal = -sp.raw_normal;
+    sp.normal = -sp.normal;
+  }
+  if (dot(sp.normal, ray.direction) > 0) sp.normal = sp.raw_normal;
+  sp.pigment = pigment_at(hit);
+  const material::Rgbft& pc = sp.pigment;
+  const material::Finish& f = *sp.finish;
+  // Opacity: 3.7 scales filter by the brightest channel (a black filter blocks); older versions do not.
+  sp.opacity = scene_.settings.language_version < 3.7 ? 1.0 - pc.filter - pc.transmit
+                                                      : 1.0 - pc.filter * pc.rgb.max() - pc.transmit;
+
+  const scene::Object* object = hit.object;
+  const double object_ior = ior_of(object);
+  // Relative ior n2/n1 for Fresnel reflection (trace.cpp, ComputeRelativeIOR).
+  double relative_ior = object_ior;
+  if (!inside.empty()) {
+    if (inside.contains(object))
+      relative_ior = inside.size() == 1 ? 1.0 / object_ior : ior_of(inside.back()) / object_ior;
+    else
+      relative_ior = object_ior / ior_of(inside.back());
+  }
+
+  // Reflectivity (trace.cpp, ComputeReflectivity / ComputeMetallic).
+  const double cos_i = -dot(ray.direction, sp.normal);
+  double reflect_weight = weight;
+  Color reflectivity;
+  if (f.reflects()) {
+    if (f.reflection_fresnel) {
+      const double fr = std::clamp(fresnel_dielectric(cos_i, 1.0, relative_ior), 0.0, 1.0);
+      reflectivity = fr * f.reflection_max + (1 - fr) * f.reflection_min;
+      reflect_weight *= reflectivity.max();
+    } else {
+      reflect_weight *= std::max(f.reflection_max.max(), f.reflection_min.max());
+      const double frac = std::fabs(f.reflection_falloff - 1) > kEpsilon
+                              ? std::pow(std::max(0.0, 1 - cos_i), f.reflection_falloff)
+                              : 1 - cos_i;
+      if (std::fabs(frac) < kEpsilon)
+        reflectivity = f.reflection_min;
+      else if (std::fabs(frac - 1) < kEpsilon)
+        reflectivity = f.reflection_max;
+      else
+        reflectivity = frac * f.reflection_max + (1 - frac) * f.reflection_min;
+    }
+    if (f.reflection_metallic > 0) reflectivity *= metallic_tint(f.reflection_metallic, pc.rgb, cos_i);
+  }
+
+  // Emission and classic ambient, then the light sources.
+  Color result = pc.rgb * (f.emission + f.ambient * scene_.settings.ambient_light) * sp.opacity;
+  if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
+
+  // Light through the surface (trace.cpp: filCol, trans).
+  Color filter = transmitted_color(pc);
+  if (f.conserve_energy && f.reflects()) {
+    const Color keep = Color(1) - reflectivity;
+    filter *= Color(std::min(1.0, keep.r), std::min(1.0, keep.g), std::min(1.0, keep.b));
+  }
+  const double trans = std::min(1.0, std::fabs(filter.grey()));
+
+  bool tir = false;
+  if (trans > scene_.settings.adc_bailout) {
+    const double t_weight = weight * max_abs(filter);
+    // Which medium the ray goes into (trace.cpp, ComputeRefraction: nested solids count as outside).
+    InteriorStack next = inside;
+    double eta;  // n1 / n2
+    if (inside.empty()) {
+      next.push(object);
+      eta = 1.0 / object_ior;
+    } else if (object == inside.back()) {
+      next.remove(object);
+      eta = object_ior / (next.empty() ? 1.0 : ior_of(next.back()));
+    } else if (next.remove(object)) {
+      eta = 1.0;
+    } else {
+      eta = ior_of(inside.back()) / object_ior;
+      next.push(object);
+    }
+    Color through;
+    if (std::fabs(eta - 1) < kEpsilon) {
+      ++context.counters.refracted;
+      through = trace({offset_origin(sp.point, -sp.raw_normal), ray.direction, ray.time}, RayKind::refraction,
+                      level + 1, t_weight, next, context);
+    } else if (auto dir = refract(ray.direction, sp.normal, eta)) {
+      ++context.counters.refracted;
+      through = trace({offset_origin(sp.point, -sp.raw_normal), normalize(*dir), ray.time},
+                      RayKind::refraction, level + 1, t_weight, next, context);
+    } else {
+      tir = true;
+      through = reflect(sp, level, t_weight, inside, context);
+    }
+    // Interior fade over the distance travelled inside this object (POV-Ray 3.7 reference, "Interior").
+    Color fade(1);
+    const material::Interior* interior = object->interior.get();
+    if (interior && inside.contains(object) && std::fabs(interior->fade_distance) > kEpsilon) {
+      const double depth = hit.t / interior->fade_distance;
+      const Color fc = interior->fade_color;
+      if (interior->fade_power >= 1000) {
+        fade = {std::exp(-(1 - fc.r) * depth), std::exp(-(1 - fc.g) * depth), std::exp(-(1 - fc.b) * depth)};
+      } else {
+        const double a = 1 + std::pow(depth, interior->fade_power);
+        fade = fc + (Color(1) - fc) / a;
+      }
+    }
+    result += tir ? fade * through : fade * through * filter;
+  }
+
+  if (!tir && f.reflects() && !reflectivity.is_black()) {
+    const Color seen = reflect(sp, level, reflect_weight, inside, context);
+    result += reflectivity * (f.reflection_exponent != 1 ? pow_color(seen, f.reflection_exponent) : seen);
+  }
+  return result;
+}
+
+Color WhittedIntegrator::reflect(const ShadingPoint& sp, int level, double weight,
+                                 const InteriorStack& inside, TraceContext& context) const {
+  const Vec3& d = sp.ray->direction;
+  Vec3 r = math::reflect(d, sp.normal);
+  // A perturbed normal can send the ray into the surface; fold it back as POV-Ray does (trace.cpp,
+  // ComputeReflection, "Reflection bugfix").
+  const double n = dot(r, sp.raw_normal);
+  if (n < 0) r = dot(r, sp.normal) < 0 ? math::reflect(d, sp.raw_normal) : r - 2 * n * sp.raw_normal;
+  ++context.counters.reflected;
+  return trace({offset_origin(sp.point, sp.raw_normal), normalize(r), sp.ray->time}, RayKind::reflection,
+               level + 1, weight, inside, context);
+}
+
+Color WhittedIntegrator::direct_light(const ShadingPoint& sp, TraceContext& context) const {
+  const material::Finish& f = *sp.finish;
+  const Color& pigment = sp.pigment.rgb;
+  const Vec3& eye = sp.ray->direction;
+  const bool double_illuminate = sp.hit->object->flags.double_illuminate;
+  Color sum;
+  for (const scene::Light& light : scene_.lights) {
+    const LightRay lr = light_ray(light, sp.point);
+    if (max_abs(lr.color) < kEpsilon) continue;
+    const double cos_l = dot(sp.normal, lr.direction);
+    if (!double_illuminate && cos_l < kEpsilon) continue;
+    Color lc = lr.color;
+    if (!light.shadowless) {
+      lc = shadow_filter(sp.point, sp.raw_normal, lr.direction, lr.distance, lc, context);
+      if (max_abs(lc) < kEpsilon) continue;
+    }
+    // Diffuse (trace.cpp, ComputeDiffuseColour): |cos|^brilliance, reduced by the surface's opacity.
+    if (f.diffuse > 0) {
+      const double c = std::fabs(cos_l);
+      const double intensity = (f.brilliance != 1 ? std::pow(c, f.brilliance) : c) * f.diffuse * sp.opacity;
+      sum += intensity * pigment * lc;
+    }
+    // Phong: the mirror direction of the eye against the light direction, to the power phong_size.
+    if (f.phong > 0) {
+      const double c = dot(math::reflect(eye, sp.normal), lr.direction);
+      if (c > 0) {
+        const double intensity = f.phong * std::pow(c, f.phong_size);
+        sum += intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
+      }
+    }
+    // Specular: Blinn's halfway vector, exponent 1/roughness.
+    if (f.specular > 0) {
+      const Vec3 h = 0.5 * (lr.direction - eye);
+      const double hl = length(h);
+      if (hl > 0) {
+        const double c = dot(h, sp.normal) / hl;
+        if (c > 0) {
+          const double intensity = f.specular * std::pow(c, 1.0 / f.roughness);
+          sum += intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
+        }
+      }
+    }
+  }
+  return sum;
+}
+
+Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, const Vec3& dir,
+                                       double distance, Color light, TraceContext& context) const {
+  // Start on the side of the surface the light is on, so a surface never shadows itself.
+  Vec3 origin = offset_origin(point, dot(normal, dir) >= 0 ? normal : -normal);
+  double remaining = distance - dot(origin - point, dir);
+  ++context.counters.shadow;
+  // Pass through transparent blockers, tinting by each one's transmitted colour (trace.cpp,
+  // TracePointLightShadowRay / ComputeShadowColour). Bounded so that coincident surfaces cannot loop.
+  for (int crossings = 0; crossings < 64 && remaining > 0; ++crossings) {
+    scene::SurfaceHit hit;
+    if (!accel_.intersect({origin, dir, 0.0}, 0.0, remaining, RayKind::shadow, hit)) break;
+    const material::Rgbft c = pigment_at(hit);
+    if (!c.is_transparent()) return Color(0);
+    light *= transmitted_color(c);
+    if (max_abs(light) < scene_.settings.adc_bailout) return Color(0);
+    const Vec3 side = dot(hit.normal, dir) >= 0 ? hit.normal : -hit.normal;
+    const Vec3 next = offset_origin(hit.point, side);
+    remaining -= dot(next - origin, dir);
+    origin = next;
+  }
+  return light;
+}
+
+}  // namespace snell::render

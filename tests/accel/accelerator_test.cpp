@@ -1,0 +1,266 @@
+// Embree's nearest hit must equal brute force's (the reference: every object tested) for every ray,
+// window and ray kind; Embree only chooses which objects to test, never how they are hit.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "snell/accel/accelerator.hpp"
+#include "snell/geometry/plane.hpp"
+#include "snell/geometry/sphere.hpp"
+#include "snell/math/pcg32.hpp"
+
+using namespace snell;
+using math::Transform;
+using math::Vec3;
+using scene::RayKind;
+
+namespace {
+
+double uniform(math::Pcg32& rng, double lo, double hi) {
+  return lo + (hi - lo) * rng.next_double();
+}
+Vec3 uniform_vec(math::Pcg32& rng, double lo, double hi) {
+  return {uniform(rng, lo, hi), uniform(rng, lo, hi), uniform(rng, lo, hi)};
+}
+
+std::shared_ptr<scene::Object> make_object(std::shared_ptr<const geometry::Shape> shape, Transform t = {}) {
+  auto o = std::make_shared<scene::Object>();
+  o->shape = std::move(shape);
+  o->transform = t;
+  return o;
+}
+
+/// Spheres, box-like ellipsoids (unit spheres scaled, rotated, moved by the object transform) and two
+/// planes; about a fifth of the objects carry each of no_shadow / no_image / no_reflection.
+scene::Scene random_scene(uint64_t seed, int count, double extent = 10) {
+  math::Pcg32 rng(seed);
+  scene::Scene s;
+  for (int i = 0; i < count; ++i) {
+    std::shared_ptr<scene::Object> o;
+    if (i % 2 == 0) {
+      o = make_object(std::make_shared<geometry::Sphere>(uniform_vec(rng, -extent, extent),
+                                                         uniform(rng, 0.02, 0.15) * extent));
+    } else {
+      const Transform t = Transform::translate(uniform_vec(rng, -extent, extent)) *
+                          Transform::rotate_xyz_degrees(uniform_vec(rng, 0, 360)) *
+                          Transform::scale(uniform_vec(rng, 0.01, 0.2) * extent);
+      o = make_object(std::make_shared<geometry::Sphere>(Vec3(0), 1.0), t);
+    }
+    o->flags.no_shadow = rng.next_double() < 0.2;
+    o->flags.no_image = rng.next_double() < 0.2;
+    o->flags.no_reflection = rng.next_double() < 0.2;
+    s.objects.push_back(o);
+  }
+  s.objects.push_back(make_object(std::make_shared<geometry::Plane>(Vec3(0, 1, 0), -1.2 * extent)));
+  auto tilted =
+      make_object(std::make_shared<geometry::Plane>(Vec3(0, 0, 1), 0),
+                  Transform::translate({0, 0, 1.3 * extent}) * Transform::rotate_xyz_degrees({20, 0, 0}));
+  tilted->flags.no_reflection = true;
+  s.objects.push_back(tilted);
+  return s;
+}
+
+void expect_same_hit(const accel::Accelerator& a, const accel::Accelerator& b, const math::Ray& ray,
+                     double t_min, double t_max, RayKind kind) {
+  scene::SurfaceHit ha, hb;
+  const bool fa = a.intersect(ray, t_min, t_max, kind, ha);
+  const bool fb = b.intersect(ray, t_min, t_max, kind, hb);
+  ASSERT_EQ(fa, fb) << "origin " << ray.origin.x << ' ' << ray.origin.y << ' ' << ray.origin.z;
+  if (!fa) return;
+  EXPECT_EQ(ha.object, hb.object);
+  EXPECT_DOUBLE_EQ(ha.t, hb.t);
+  EXPECT_GT(ha.t, t_min);
+  EXPECT_LT(ha.t, t_max);
+  for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(ha.point[k], hb.point[k]);
+}
+
+constexpr RayKind kKinds[] = {RayKind::camera, RayKind::reflection, RayKind::refraction, RayKind::shadow};
+
+}  // namespace
+
+TEST(EmbreeAcceleratorTest, NearestHitMatchesBruteForceOnRandomScenes) {
+  for (uint64_t seed : {1u, 2u, 3u}) {
+    const scene::Scene s = random_scene(seed, 300);
+    const auto embree = accel::make_accelerator("embree", s);
+    const auto brute = accel::make_accelerator("none", s);
+    math::Pcg32 rng(seed * 77);
+    int hits = 0;
+    for (int i = 0; i < 4000; ++i) {
+      // Directions are deliberately not unit length: t must stay the caller's parameter.
+      const math::Ray ray{uniform_vec(rng, -15, 15), uniform_vec(rng, -1, 1) * uniform(rng, 0.3, 3), 0};
+      const RayKind kind = kKinds[i % 4];
+      expect_same_hit(*embree, *brute, ray, 1e-6, math::kInfinity, kind);
+      scene::SurfaceHit h;
+      hits += brute->intersect(ray, 1e-6, math::kInfinity, kind, h);
+    }
+    EXPECT_GT(hits, 2000) << "scene too sparse to test anything";
+  }
+}
+
+TEST(EmbreeAcceleratorTest, RespectsTMinTMaxWindows) {
+  const scene::Scene s = random_scene(11, 200);
+  const auto embree = accel::make_accelerator("embree", s);
+  const auto brute = accel::make_accelerator("none", s);
+  math::Pcg32 rng(5);
+  for (int i = 0; i < 4000; ++i) {
+    const math::Ray ray{uniform_vec(rng, -15, 15), normalize(uniform_vec(rng, -1, 1)), 0};
+    const double t_min = uniform(rng, 0, 20);
+    const double t_max = t_min + uniform(rng, 0, 15);
+    expect_same_hit(*embree, *brute, ray, t_min, t_max, kKinds[i % 4]);
+  }
+}
+
+TEST(EmbreeAcceleratorTest, RayKindFlagsHideObjects) {
+  // One sphere in front of another; the front one is hidden from one kind of ray at a time.
+  for (int flag = 0; flag < 3; ++flag) {
+    scene::Scene s;
+    auto front = make_object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 5), 1));
+    auto back = make_object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 10), 1));
+    front->flags.no_shadow = flag == 0;
+    front->flags.no_image = flag == 1;
+    front->flags.no_reflection = flag == 2;
+    s.objects = {front, back};
+    const auto embree = accel::make_accelerator("embree", s);
+    const math::Ray ray{{0, 0, 0}, {0, 0, 1}, 0};
+    for (RayKind kind : kKinds) {
+      const bool hidden = (flag == 0 && kind == RayKind::shadow) ||
+                          (flag == 1 && (kind == RayKind::camera || kind == RayKind::refraction)) ||
+                          (flag == 2 && kind == RayKind::reflection);
+      scene::SurfaceHit hit;
+      ASSERT_TRUE(embree->intersect(ray, 0, math::kInfinity, kind, hit));
+      EXPECT_EQ(hit.object, hidden ? back.get() : front.get());
+      EXPECT_DOUBLE_EQ(hit.t, hidden ? 9.0 : 4.0);  // analytic: sphere surfaces at z = 4 and z = 9
+    }
+  }
+}
+
+TEST(EmbreeAcceleratorTest, DistantCameraAndGrazingRaysKeepDoublePrecision) {
+  // Tiny spheres seen from 1e5 away: float rays from the camera would be off by ~1e-2, more than the
+  // spheres' size. Rays aim just inside and just outside each silhouette.
+  scene::Scene s;
+  math::Pcg32 rng(9);
+  std::vector<std::pair<Vec3, double>> spheres;
+  for (int i = 0; i < 50; ++i) {
+    spheres.emplace_back(uniform_vec(rng, -1, 1), uniform(rng, 1e-3, 1e-2));
+    s.objects.push_back(
+        make_object(std::make_shared<geometry::Sphere>(spheres.back().first, spheres.back().second)));
+  }
+  const auto embree = accel::make_accelerator("embree", s);
+  const auto brute = accel::make_accelerator("none", s);
+  const Vec3 camera{3e4, -2e4, 1e5};
+  int hits = 0;
+  for (const auto& [c, r] : spheres) {
+    Vec3 u, v;
+    orthonormal_basis(normalize(c - camera), u, v);
+    for (double f : {0.999999, 1.000001, 0.5}) {
+      for (int k = 0; k < 8; ++k) {
+        const double a = k * math::kTwoPi / 8;
+        const Vec3 target = c + f * r * (std::cos(a) * u + std::sin(a) * v);
+        const math::Ray ray{camera, target - camera, 0};
+        expect_same_hit(*embree, *brute, ray, 0, math::kInfinity, RayKind::camera);
+        scene::SurfaceHit h;
+        hits += embree->intersect(ray, 0, math::kInfinity, RayKind::camera, h);
+      }
+    }
+  }
+  EXPECT_GE(hits, 50 * 16);  // every ray aimed inside a silhouette hits something
+}
+
+TEST(EmbreeAcceleratorTest, EmptySceneHasNoHits) {
+  const scene::Scene s;
+  for (const char* kind : {"embree", "none"}) {
+    const auto a = accel::make_accelerator(kind, s);
+    scene::SurfaceHit hit;
+    EXPECT_FALSE(a->intersect({{0, 0, 0}, {0, 0, 1}, 0}, 0, math::kInfinity, RayKind::camera, hit));
+    EXPECT_EQ(a->stats().objects, 0u);
+    EXPECT_EQ(a->stats().unbounded_objects, 0u);
+    EXPECT_EQ(a->name(), kind);
+  }
+}
+
+TEST(EmbreeAcceleratorTest, OnlyUnboundedObjects) {
+  scene::Scene s;
+  s.objects.push_back(make_object(std::make_shared<geometry::Plane>(Vec3(0, 1, 0), -1)));
+  const auto a = accel::make_accelerator("embree", s);
+  scene::SurfaceHit hit;
+  ASSERT_TRUE(a->intersect({{0, 0, 0}, {0, -2, 0}, 0}, 0, math::kInfinity, RayKind::camera, hit));
+  EXPECT_DOUBLE_EQ(hit.t, 0.5);  // y = -1 reached at t = 0.5 with direction length 2
+  EXPECT_EQ(a->stats().unbounded_objects, 1u);
+}
+
+TEST(EmbreeAcceleratorTest, StatsCountObjectsAndUnboundedOnes) {
+  const scene::Scene s = random_scene(4, 40);
+  for (const char* kind : {"embree", "none"}) {
+    const auto a = accel::make_accelerator(kind, s);
+    EXPECT_EQ(a->stats().objects, 42u);
+    EXPECT_EQ(a->stats().unbounded_objects, 2u);  // the two planes
+    EXPECT_GE(a->stats().build_seconds, 0.0);
+  }
+}
+
+TEST(EmbreeAcceleratorTest, ConcurrentQueriesAgreeWithBruteForce) {
+  const scene::Scene s = random_scene(21, 500);
+  const auto embree = accel::make_accelerator("embree", s);
+  const auto brute = accel::make_accelerator("none", s);
+  std::vector<int> mismatches(4, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t) {
+    threads.emplace_back([&, t] {
+      math::Pcg32 rng(100 + t);
+      for (int i = 0; i < 5000; ++i) {
+        const math::Ray ray{uniform_vec(rng, -15, 15), uniform_vec(rng, -1, 1), 0};
+        scene::SurfaceHit ha, hb;
+        const bool fa = embree->intersect(ray, 1e-6, math::kInfinity, RayKind::camera, ha);
+        const bool fb = brute->intersect(ray, 1e-6, math::kInfinity, RayKind::camera, hb);
+        if (fa != fb || (fa && (ha.object != hb.object || ha.t != hb.t))) ++mismatches[t];
+      }
+    });
+  }
+  for (auto& th : threads) th.join();
+  for (int m : mismatches) EXPECT_EQ(m, 0);
+}
+
+TEST(MakeAcceleratorTest, UnknownKindThrows) {
+  const scene::Scene s;
+  EXPECT_THROW(accel::make_accelerator("kdtree", s), std::invalid_argument);
+}
+
+TEST(EmbreeAcceleratorTest, DegenerateRaysAndWindowsMatchBruteForce) {
+  const scene::Scene s = random_scene(8, 100);
+  const auto embree = accel::make_accelerator("embree", s);
+  const auto brute = accel::make_accelerator("none", s);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const math::Ray toward{{0, 0, -20}, {0.01, 0.02, 1}, 0};
+  expect_same_hit(*embree, *brute, toward, 5, 5, RayKind::camera);     // empty window
+  expect_same_hit(*embree, *brute, toward, 9, 3, RayKind::camera);     // reversed window
+  expect_same_hit(*embree, *brute, toward, nan, 50, RayKind::camera);  // NaN window
+  expect_same_hit(*embree, *brute, {{0, 0, 0}, {0, 0, 0}, 0}, 0, math::kInfinity, RayKind::camera);
+  expect_same_hit(*embree, *brute, {{nan, 0, 0}, {0, 0, 1}, 0}, 0, math::kInfinity, RayKind::camera);
+  expect_same_hit(*embree, *brute, {{0, 0, 0}, {0, 0, nan}, 0}, 0, math::kInfinity, RayKind::camera);
+}
+
+TEST(EmbreeAcceleratorTest, HugeObjectsBeyondFloatRangeAreStillHit) {
+  // A sphere of radius 1e20 (POV-Ray scenes use such "sky spheres") has bounds Embree cannot store.
+  scene::Scene s = random_scene(12, 20);
+  s.objects.push_back(make_object(std::make_shared<geometry::Sphere>(Vec3(0), 1e20)));
+  const auto embree = accel::make_accelerator("embree", s);
+  const auto brute = accel::make_accelerator("none", s);
+  EXPECT_EQ(embree->stats().unbounded_objects, 3u);
+  math::Pcg32 rng(3);
+  for (int i = 0; i < 500; ++i) {
+    const math::Ray ray{uniform_vec(rng, -15, 15), normalize(uniform_vec(rng, -1, 1)), 0};
+    expect_same_hit(*embree, *brute, ray, 1e-6, math::kInfinity, RayKind::camera);
+  }
+  // Alone with a small sphere, the huge one is what a ray leaving the small one meets, at t = 1e20.
+  scene::Scene alone;
+  alone.objects = {s.objects.back(), make_object(std::make_shared<geometry::Sphere>(Vec3(0), 1))};
+  const auto a = accel::make_accelerator("embree", alone);
+  scene::SurfaceHit hit;
+  ASSERT_TRUE(a->intersect({{0, 0, 0}, {0, 1, 0}, 0}, 2, math::kInfinity, RayKind::camera, hit));
+  EXPECT_DOUBLE_EQ(hit.t, 1e20);
+  EXPECT_EQ(hit.object, s.objects.back().get());
+}

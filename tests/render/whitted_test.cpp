@@ -1,0 +1,154 @@
+// The Whitted integrator against analytic POV-Ray values: ambient*colour + diffuse*colour*N.L for a lit
+// sphere; Fresnel reflection numbers from ../shared/reference-values.md section 3.
+#include "snell/render/whitted.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene_builder.hpp"
+#include "snell/accel/accelerator.hpp"
+#include "snell/math/constants.hpp"
+#include "snell/render/renderer.hpp"
+
+namespace snell::render {
+namespace {
+
+using math::Color;
+using math::Vec3;
+
+scene::Scene lit_sphere_scene() {
+  scene::Scene s;
+  material::Finish f;  // POV-Ray defaults: ambient 0.1, diffuse 0.6
+  s.objects.push_back(test::object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 0), 1.0),
+                                   test::texture({Color(1, 0.5, 0.25)}, f)));
+  s.lights.push_back(test::point_light({0, 5, -6}));
+  s.camera.location = {0, 0, -5};
+  s.camera.direction = {0, 0, 1};
+  s.camera.right = {1, 0, 0};
+  return s;
+}
+
+TEST(WhittedTest, LitDiffuseSphereCentreIsAmbientPlusLambert) {
+  const scene::Scene s = lit_sphere_scene();
+  const auto accel = accel::make_accelerator("none", s);
+  RenderOptions o;
+  o.width = 11;
+  o.height = 11;
+  o.threads = 1;
+  const RenderResult r = Renderer(s, *accel, o).render();
+  // Hit (0,0,-1), N = (0,0,-1), L towards (0,5,-6): N.L = 5/sqrt(50) = 1/sqrt(2).
+  const double k = 0.1 + 0.6 / std::sqrt(2.0);
+  const Color c = r.image.at(5, 5);
+  EXPECT_NEAR(c.r, 1.0 * k, 1e-6);
+  EXPECT_NEAR(c.g, 0.5 * k, 1e-6);
+  EXPECT_NEAR(c.b, 0.25 * k, 1e-6);
+  EXPECT_EQ(r.rays.camera, 121u);
+  EXPECT_GT(r.rays.shadow, 0u);
+  // A corner pixel misses the sphere: the (default black) background.
+  EXPECT_EQ(r.image.at(0, 0).r, 0.0f);
+}
+
+TEST(WhittedTest, ShadowedPointGetsOnlyAmbient) {
+  scene::Scene s = lit_sphere_scene();
+  // An opaque blocker between the light and the lit point.
+  s.objects.push_back(
+      test::object(std::make_shared<geometry::Sphere>(Vec3(0, 2.5, -3.5), 0.5), test::texture({Color(1)})));
+  const auto accel = accel::make_accelerator("none", s);
+  WhittedIntegrator w(s, *accel);
+  TraceContext ctx;
+  const Color c = w.trace_camera_ray({{0, 0, -5}, {0, 0, 1}}, ctx);
+  EXPECT_NEAR(c.r, 0.1, 1e-9);
+  EXPECT_NEAR(c.g, 0.05, 1e-9);
+}
+
+TEST(WhittedTest, FilteredShadowIsTintedByTransparentBlocker) {
+  scene::Scene s = lit_sphere_scene();
+  // rgbf <0.5,1,1,1> blocker: the shadow ray crosses it twice, each time multiplied by filter*rgb.
+  s.objects.push_back(test::object(std::make_shared<geometry::Sphere>(Vec3(0, 2.5, -3.5), 0.5),
+                                   test::texture({Color(0.5, 1, 1), 1.0, 0.0})));
+  const auto accel = accel::make_accelerator("none", s);
+  WhittedIntegrator w(s, *accel);
+  TraceContext ctx;
+  const Color c = w.trace_camera_ray({{0, 0, -5}, {0, 0, 1}}, ctx);
+  const double lambert = 0.6 / std::sqrt(2.0);
+  EXPECT_NEAR(c.r, 0.1 + lambert * 0.25, 1e-9);
+  EXPECT_NEAR(c.g, 0.5 * (0.1 + lambert), 1e-9);
+}
+
+TEST(WhittedTest, MirrorShowsBackground) {
+  scene::Scene s;
+  material::Finish f;
+  f.ambient = Color(0);
+  f.diffuse = 0;
+  f.reflection_min = f.reflection_max = Color(1);
+  s.objects.push_back(
+      test::object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 0), 1.0), test::texture({Color(0)}, f)));
+  s.background.rgb = Color(0.2, 0.4, 0.6);
+  const auto accel = accel::make_accelerator("none", s);
+  WhittedIntegrator w(s, *accel);
+  TraceContext ctx;
+  const Color c = w.trace_camera_ray({{0, 0, -5}, {0, 0, 1}}, ctx);
+  EXPECT_NEAR(c.b, 0.6, 1e-12);
+  EXPECT_EQ(ctx.counters.reflected, 1u);
+}
+
+TEST(WhittedTest, FresnelReflectionOffGlassAt60Degrees) {
+  scene::Scene s;
+  material::Finish f;
+  f.ambient = Color(0);
+  f.diffuse = 0;
+  f.reflection_min = Color(0);
+  f.reflection_max = Color(1);
+  f.reflection_fresnel = true;
+  s.objects.push_back(
+      test::object(std::make_shared<geometry::Plane>(Vec3(0, 1, 0), 0.0), test::texture({Color(0)}, f), 1.5));
+  s.background.rgb = Color(1);
+  const auto accel = accel::make_accelerator("none", s);
+  WhittedIntegrator w(s, *accel);
+  TraceContext ctx;
+  const double a = math::radians(60);
+  const Color c = w.trace_camera_ray({{0, 1, 0}, {std::sin(a), -std::cos(a), 0}}, ctx);
+  // Reflected part only (the opaque black pigment lets nothing through): R(60°, 1 -> 1.5) = 0.089187.
+  EXPECT_NEAR(c.r, 0.089187, 1e-6);
+}
+
+TEST(WhittedTest, TransmitPassesBackgroundThroughClearObject) {
+  scene::Scene s;
+  material::Finish f;
+  f.ambient = Color(0);
+  f.diffuse = 0;
+  // rgbf <1,0.5,0.5,1>: entering and leaving each multiply by the filter colour.
+  s.objects.push_back(test::object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 0), 1.0),
+                                   test::texture({Color(1, 0.5, 0.5), 1.0, 0.0}, f)));
+  s.background.rgb = Color(0.8);
+  const auto accel = accel::make_accelerator("none", s);
+  WhittedIntegrator w(s, *accel);
+  TraceContext ctx;
+  const Color c = w.trace_camera_ray({{0, 0, -5}, {0, 0, 1}}, ctx);
+  EXPECT_NEAR(c.r, 0.8, 1e-9);
+  EXPECT_NEAR(c.g, 0.8 * 0.25, 1e-9);
+  EXPECT_EQ(ctx.counters.refracted, 2u);
+}
+
+TEST(WhittedTest, MaxTraceLevelStopsRecursion) {
+  // Glass half-space below y=0 seen at 45°: with max_trace_level 1 only the camera ray is traced.
+  scene::Scene s;
+  material::Finish f;
+  f.ambient = Color(0);
+  f.diffuse = 0;
+  s.objects.push_back(test::object(std::make_shared<geometry::Plane>(Vec3(0, 1, 0), 0.0),
+                                   test::texture({Color(1), 0.0, 1.0}, f), 1.5));
+  s.background.rgb = Color(0.5);
+  s.settings.max_trace_level = 1;
+  const auto accel = accel::make_accelerator("none", s);
+  WhittedIntegrator w(s, *accel);
+  TraceContext ctx;
+  const double h = std::sqrt(0.5);
+  EXPECT_EQ(w.trace_camera_ray({{0, 1, 0}, {h, -h, 0}}, ctx).r, 0.0);
+  s.settings.max_trace_level = 5;
+  EXPECT_NEAR(w.trace_camera_ray({{0, 1, 0}, {h, -h, 0}}, ctx).r, 0.5, 1e-12);
+}
+
+}  // namespace
+}  // namespace snell::render
