@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <vector>
 
 #include "snell/geometry/shape.hpp"
@@ -35,6 +36,15 @@ class Blob final : public Shape {
   double density(const Vec3& p) const;
 
  private:
+  /// One component's share of the field along a ray: sum_i c[i] s^i on [s0, s1] (s: local ray parameter).
+  struct Piece {
+    double s0, s1;
+    std::array<double, 5> c;
+  };
+  void collect_pieces(const BlobComponent& comp, const Ray& ray, std::vector<Piece>& pieces) const;
+  void find_roots(const Ray& ray, double t_min, double t_max, bool first_only, HitList& out) const;
+  LocalHit make_hit(const Vec3& p, double t) const;
+
   double threshold_;
   std::vector<BlobComponent> components_;
 };

@@ -1,4 +1,5 @@
 #pragma once
+#include "snell/geometry/hit_buffer.hpp"
 #include "snell/geometry/shape.hpp"
 
 namespace snell::geometry {
@@ -15,6 +16,9 @@ class Box final : public Shape {
   std::string_view kind() const override { return "box"; }
 
  private:
+  void gather(const Ray& ray, HitBuffer<2>& hits) const;
+
+  Vec3 lo_, hi_;
 };
 
 }  // namespace snell::geometry

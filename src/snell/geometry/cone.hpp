@@ -1,4 +1,5 @@
 #pragma once
+#include "snell/geometry/hit_buffer.hpp"
 #include "snell/geometry/shape.hpp"
 
 namespace snell::geometry {
@@ -15,6 +16,15 @@ class Cone final : public Shape {
   std::string_view kind() const override { return "cone"; }
 
  private:
+  void gather(const Ray& ray, HitBuffer<4>& hits) const;
+  double radius_at(double z) const { return base_radius_ + slope_ * z; }
+
+  Vec3 base_;
+  Vec3 u_, v_, w_;  // orthonormal frame, w_ along the axis
+  double length_;
+  double base_radius_, cap_radius_;
+  double slope_;  // d radius / d z
+  bool open_;
 };
 
 }  // namespace snell::geometry

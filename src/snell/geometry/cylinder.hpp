@@ -1,4 +1,5 @@
 #pragma once
+#include "snell/geometry/hit_buffer.hpp"
 #include "snell/geometry/shape.hpp"
 
 namespace snell::geometry {
@@ -15,6 +16,13 @@ class Cylinder final : public Shape {
   std::string_view kind() const override { return "cylinder"; }
 
  private:
+  void gather(const Ray& ray, HitBuffer<4>& hits) const;
+
+  Vec3 base_;
+  Vec3 u_, v_, w_;  // orthonormal frame, w_ along the axis
+  double length_;
+  double radius_;
+  bool open_;
 };
 
 }  // namespace snell::geometry

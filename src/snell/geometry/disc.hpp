@@ -15,6 +15,10 @@ class Disc final : public Shape {
   std::string_view kind() const override { return "disc"; }
 
  private:
+  Vec3 center_;
+  Vec3 normal_;  // unit
+  Vec3 u_, v_;   // in-plane frame for uv
+  double radius_, hole_radius_;
 };
 
 }  // namespace snell::geometry

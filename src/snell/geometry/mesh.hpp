@@ -1,11 +1,14 @@
 #pragma once
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "snell/geometry/shape.hpp"
 
 namespace snell::geometry {
+
+class MeshBvh;
 
 /// Triangle soup with optional per-vertex normals and uvs, shared by POV-Ray `mesh`, `mesh2` and imported
 /// meshes. Index triples refer into the vectors; `normal_indices`/`uv_indices` are empty or parallel to
@@ -22,6 +25,8 @@ struct MeshData {
   std::optional<Vec3> inside_vector;
 };
 
+/// POV-Ray `mesh`/`mesh2`: triangles under an internal BVH (mesh_bvh.hpp). Hits report the face index in
+/// `LocalHit::part`. Without `inside_vector` a mesh has no interior (POV-Ray: Inside is false).
 class Mesh final : public Shape {
  public:
   explicit Mesh(MeshData data);
@@ -36,7 +41,12 @@ class Mesh final : public Shape {
   const MeshData& data() const { return data_; }
 
  private:
+  LocalHit make_hit(int face, double t, double b1, double b2) const;
+  const std::array<int, 3>* normal_face(int face) const;
+  const std::array<int, 3>* uv_face(int face) const;
+
   MeshData data_;
+  std::unique_ptr<MeshBvh> bvh_;
 };
 
 }  // namespace snell::geometry

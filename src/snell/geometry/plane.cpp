@@ -1,16 +1,25 @@
 #include "snell/geometry/plane.hpp"
 
+#include <cmath>
+#include <stdexcept>
+
 namespace snell::geometry {
 
+// POV-Ray 3.7 (parser.cpp, Parse_Plane) divides the normal by its length but keeps the distance as
+// written, so `plane { 2*y, 1 }` is the plane y = 1 (not y = 0.5); lengths below EPSILON (1e-10) are an
+// error there ("Degenerate plane normal").
 Plane::Plane(const Vec3& normal, double distance) {
+  if (!is_finite(normal) || !std::isfinite(distance))
+    throw std::invalid_argument("plane: normal and distance must be finite");
   const double len = length(normal);
-  normal_ = len > 0 ? normal / len : Vec3(0, 1, 0);
-  distance_ = distance;  // TODO(geometry): check POV-Ray scales d when the normal is not unit
+  if (len < 1e-10) throw std::invalid_argument("plane: degenerate plane normal");
+  normal_ = normal / len;
+  distance_ = distance;
 }
 
 bool Plane::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
   const double denom = dot(normal_, ray.direction);
-  if (denom == 0) return false;
+  if (denom == 0 || !std::isfinite(denom)) return false;
   const double t = (distance_ - dot(normal_, ray.origin)) / denom;
   if (!(t > t_min && t < t_max)) return false;
   hit = LocalHit{};

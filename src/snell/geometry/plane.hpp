@@ -3,8 +3,8 @@
 
 namespace snell::geometry {
 
-/// POV-Ray `plane { normal, distance }`: the points p with n.p = d, n normalised as POV-Ray does
-/// (distance scaled along). The inside is the half-space the normal points away from.
+/// POV-Ray `plane { normal, distance }`: the points p with n.p = d for the normalised n; as in POV-Ray the
+/// distance is NOT rescaled by the normal's length. The inside is the half-space the normal points away from.
 class Plane final : public Shape {
  public:
   Plane(const Vec3& normal, double distance);

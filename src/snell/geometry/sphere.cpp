@@ -6,7 +6,9 @@
 
 namespace snell::geometry {
 
-Bounds3 Sphere::bounds() const { return {center_ - Vec3(radius_), center_ + Vec3(radius_)}; }
+Bounds3 Sphere::bounds() const {
+  return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
+}
 
 bool Sphere::roots(const Ray& ray, double& t0, double& t1) const {
   // Numerically stable form (pbrt-v4 6.1.4): work from the offset to the centre and compute the
@@ -57,6 +59,8 @@ void Sphere::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits)
   if (t1 > t_min && t1 < t_max && t1 != t0) hits.push_back(make_hit(ray, t1));
 }
 
-bool Sphere::inside(const Vec3& p) const { return length_squared(p - center_) < radius_ * radius_; }
+bool Sphere::inside(const Vec3& p) const {
+  return length_squared(p - center_) < radius_ * radius_;
+}
 
 }  // namespace snell::geometry

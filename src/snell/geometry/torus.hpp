@@ -1,4 +1,5 @@
 #pragma once
+#include "snell/geometry/hit_buffer.hpp"
 #include "snell/geometry/shape.hpp"
 
 namespace snell::geometry {
@@ -15,6 +16,10 @@ class Torus final : public Shape {
   std::string_view kind() const override { return "torus"; }
 
  private:
+  void gather(const Ray& ray, HitBuffer<4>& hits) const;
+  LocalHit make_hit(const Vec3& p, double t) const;
+
+  double major_, minor_;
 };
 
 }  // namespace snell::geometry

@@ -1,0 +1,72 @@
+#include "snell/geometry/box.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace snell::geometry {
+
+Box::Box(const Vec3& corner1, const Vec3& corner2) : lo_(min(corner1, corner2)), hi_(max(corner1, corner2)) {
+  if (!is_finite(lo_) || !is_finite(hi_)) throw std::invalid_argument("box: corners must be finite");
+}
+
+Bounds3 Box::bounds() const {
+  return {lo_, hi_};
+}
+
+void Box::gather(const Ray& ray, HitBuffer<2>& hits) const {
+  // Slab method (Kay & Kajiya 1986), remembering which slab gave the entry and the exit.
+  double t0 = -math::kInfinity, t1 = math::kInfinity;
+  int axis0 = -1, axis1 = -1;
+  for (int a = 0; a < 3; ++a) {
+    const double d = ray.direction[a];
+    if (d == 0) {
+      if (ray.origin[a] < lo_[a] || ray.origin[a] > hi_[a]) return;
+      continue;
+    }
+    double tn = (lo_[a] - ray.origin[a]) / d;
+    double tf = (hi_[a] - ray.origin[a]) / d;
+    if (tn > tf) std::swap(tn, tf);
+    if (tn > t0) {
+      t0 = tn;
+      axis0 = a;
+    }
+    if (tf < t1) {
+      t1 = tf;
+      axis1 = a;
+    }
+  }
+  if (t0 > t1 || axis0 < 0) return;
+  const auto make = [&](double t, int axis, double sign) {
+    LocalHit h;
+    h.t = t;
+    h.normal[axis] = sign;
+    const Vec3 p = ray.at(t);
+    const Vec3 e = hi_ - lo_;
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    h.uv = {e[a] > 0 ? (p[a] - lo_[a]) / e[a] : 0, e[b] > 0 ? (p[b] - lo_[b]) / e[b] : 0};
+    h.part = axis;
+    return h;
+  };
+  // Entering through a face whose outward normal opposes the direction, leaving through one along it.
+  if (hits.accepts(t0)) hits.add(make(t0, axis0, ray.direction[axis0] > 0 ? -1.0 : 1.0));
+  if (hits.accepts(t1) && t1 != t0) hits.add(make(t1, axis1, ray.direction[axis1] > 0 ? 1.0 : -1.0));
+}
+
+bool Box::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
+  HitBuffer<2> hits(t_min, t_max);
+  gather(ray, hits);
+  return hits.nearest(hit);
+}
+
+void Box::all_hits(const Ray& ray, double t_min, double t_max, HitList& out) const {
+  HitBuffer<2> hits(t_min, t_max);
+  gather(ray, hits);
+  hits.append_sorted(out);
+}
+
+// POV-Ray's Box::Inside counts the faces as inside.
+bool Box::inside(const Vec3& p) const {
+  return bounds().contains(p);
+}
+
+}  // namespace snell::geometry

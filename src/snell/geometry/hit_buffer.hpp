@@ -1,0 +1,50 @@
+#pragma once
+// A few candidate crossings of one ray with a convex-ish shape (box, cylinder, cone, torus), filtered to
+// (t_min, t_max) and kept sorted, so that `intersect` and `all_hits` share one code path.
+#include <array>
+#include <utility>
+
+#include "snell/geometry/shape.hpp"
+
+namespace snell::geometry {
+
+template <int N>
+class HitBuffer {
+ public:
+  HitBuffer(double t_min, double t_max) : t_min_(t_min), t_max_(t_max) {}
+
+  /// Whether a crossing at t would be kept (lets callers skip computing the normal).
+  bool accepts(double t) const { return t > t_min_ && t < t_max_ && size_ < N; }
+  void add(const LocalHit& hit) {
+    if (accepts(hit.t)) hits_[size_++] = hit;
+  }
+  void sort() {
+    // Insertion sort: at most N elements (std::sort trips GCC's -Warray-bounds on tiny arrays).
+    for (int i = 1; i < size_; ++i) {
+      for (int j = i; j > 0 && hits_[j].t < hits_[j - 1].t; --j) std::swap(hits_[j], hits_[j - 1]);
+    }
+  }
+  double t_min() const { return t_min_; }
+  double t_max() const { return t_max_; }
+  int size() const { return size_; }
+  const LocalHit& operator[](int i) const { return hits_[i]; }
+
+  /// Sorts, then the nearest kept crossing.
+  bool nearest(LocalHit& hit) {
+    if (size_ == 0) return false;
+    sort();
+    hit = hits_[0];
+    return true;
+  }
+  void append_sorted(HitList& out) {
+    sort();
+    out.insert(out.end(), hits_.begin(), hits_.begin() + size_);
+  }
+
+ private:
+  double t_min_, t_max_;
+  std::array<LocalHit, N> hits_{};
+  int size_ = 0;
+};
+
+}  // namespace snell::geometry

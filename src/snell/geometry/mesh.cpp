@@ -1,0 +1,141 @@
+#include "snell/geometry/mesh.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "snell/geometry/mesh_bvh.hpp"
+#include "snell/geometry/triangle_kernel.hpp"
+
+namespace snell::geometry {
+namespace {
+
+void check_indices(const std::vector<std::array<int, 3>>& faces, size_t count, const char* what) {
+  for (size_t f = 0; f < faces.size(); ++f) {
+    for (int i : faces[f]) {
+      if (i < 0 || static_cast<size_t>(i) >= count)
+        throw std::invalid_argument("mesh: face " + std::to_string(f) + " has " + what + " index " +
+                                    std::to_string(i) + " out of range (" + std::to_string(count) +
+                                    " given)");
+    }
+  }
+}
+
+}  // namespace
+
+Mesh::Mesh(MeshData data) : data_(std::move(data)) {
+  for (const Vec3& v : data_.vertices)
+    if (!is_finite(v)) throw std::invalid_argument("mesh: vertices must be finite");
+  check_indices(data_.faces, data_.vertices.size(), "vertex");
+  const auto check_parallel = [&](const std::vector<std::array<int, 3>>& idx, size_t count,
+                                  const char* what) {
+    if (idx.empty()) return;
+    if (idx.size() != data_.faces.size())
+      throw std::invalid_argument(std::string("mesh: ") + what + " index list must match the face count");
+    check_indices(idx, count, what);
+  };
+  check_parallel(data_.normal_indices, data_.normals.size(), "normal");
+  check_parallel(data_.uv_indices, data_.uvs.size(), "uv");
+  if (data_.inside_vector && length_squared(*data_.inside_vector) == 0)
+    throw std::invalid_argument("mesh: inside_vector must not be zero");
+
+  std::vector<Bounds3> boxes(data_.faces.size());
+  for (size_t f = 0; f < data_.faces.size(); ++f) {
+    const auto& face = data_.faces[f];
+    boxes[f] = Bounds3(data_.vertices[face[0]], data_.vertices[face[1]]).unite(data_.vertices[face[2]]);
+  }
+  bvh_ = std::make_unique<MeshBvh>(boxes);
+}
+
+Mesh::~Mesh() = default;
+
+Bounds3 Mesh::bounds() const {
+  return bvh_->bounds();
+}
+
+// mesh2 without normal_indices/uv_indices uses the face indices when the lists are per vertex (POV-Ray
+// documentation, "Mesh2").
+const std::array<int, 3>* Mesh::normal_face(int face) const {
+  if (!data_.normal_indices.empty()) return &data_.normal_indices[face];
+  if (!data_.normals.empty() && data_.normals.size() == data_.vertices.size()) return &data_.faces[face];
+  return nullptr;
+}
+
+const std::array<int, 3>* Mesh::uv_face(int face) const {
+  if (!data_.uv_indices.empty()) return &data_.uv_indices[face];
+  if (!data_.uvs.empty() && data_.uvs.size() == data_.vertices.size()) return &data_.faces[face];
+  return nullptr;
+}
+
+LocalHit Mesh::make_hit(int face, double t, double b1, double b2) const {
+  const auto& f = data_.faces[face];
+  const Vec3 &a = data_.vertices[f[0]], &b = data_.vertices[f[1]], &c = data_.vertices[f[2]];
+  LocalHit hit;
+  hit.t = t;
+  hit.part = face;
+  hit.normal = normalize(cross(b - a, c - a));
+  const double b0 = 1 - b1 - b2;
+  if (const auto* nf = normal_face(face)) {
+    const Vec3 n = b0 * data_.normals[(*nf)[0]] + b1 * data_.normals[(*nf)[1]] + b2 * data_.normals[(*nf)[2]];
+    if (length_squared(n) > 0) hit.shading_normal = normalize(n);
+  }
+  if (const auto* uf = uv_face(face)) {
+    const Vec2 &u0 = data_.uvs[(*uf)[0]], &u1 = data_.uvs[(*uf)[1]], &u2 = data_.uvs[(*uf)[2]];
+    hit.uv = {b0 * u0.u + b1 * u1.u + b2 * u2.u, b0 * u0.v + b1 * u1.v + b2 * u2.v};
+  } else {
+    hit.uv = {b1, b2};
+  }
+  return hit;
+}
+
+bool Mesh::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
+  int best = -1;
+  TriangleHit best_hit{};
+  double t_far = t_max;
+  bvh_->traverse(ray, t_min, t_far, [&](int face, double& t_limit) {
+    const auto& f = data_.faces[face];
+    TriangleHit th;
+    if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, t_min,
+                           t_limit, th)) {
+      t_limit = th.t;
+      best = face;
+      best_hit = th;
+    }
+  });
+  if (best < 0) return false;
+  hit = make_hit(best, best_hit.t, best_hit.b1, best_hit.b2);
+  return true;
+}
+
+void Mesh::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
+  const size_t first = hits.size();
+  double t_far = t_max;
+  bvh_->traverse(ray, t_min, t_far, [&](int face, double&) {
+    const auto& f = data_.faces[face];
+    TriangleHit th;
+    if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, t_min,
+                           t_max, th))
+      hits.push_back(make_hit(face, th.t, th.b1, th.b2));
+  });
+  std::sort(hits.begin() + static_cast<std::ptrdiff_t>(first), hits.end(),
+            [](const LocalHit& a, const LocalHit& b) { return a.t < b.t; });
+}
+
+// POV-Ray (mesh.cpp, Mesh::Inside): with inside_vector, a point is inside when a ray from it along that
+// vector crosses the mesh an odd number of times; without it a mesh has no inside.
+bool Mesh::inside(const Vec3& p) const {
+  if (!data_.inside_vector) return false;
+  const Ray ray{p, *data_.inside_vector, 0};
+  int crossings = 0;
+  double t_far = math::kInfinity;
+  bvh_->traverse(ray, 0.0, t_far, [&](int face, double&) {
+    const auto& f = data_.faces[face];
+    TriangleHit th;
+    if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, 0.0,
+                           math::kInfinity, th))
+      ++crossings;
+  });
+  return crossings % 2 == 1;
+}
+
+}  // namespace snell::geometry

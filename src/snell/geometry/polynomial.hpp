@@ -1,0 +1,28 @@
+#pragma once
+// Real roots of low-degree polynomials inside an interval, for shapes whose ray equation is a polynomial
+// in t (torus, blob, later quartic/poly). Roots are isolated with a Sturm sequence (the count of distinct
+// real roots in (a, b] is the drop in sign changes, Sturm 1829) and then refined by bracketed Newton
+// iteration, or by Sturm-count bisection for even-multiplicity roots that do not change sign.
+#include <array>
+#include <span>
+
+namespace snell::geometry {
+
+/// Highest degree `real_roots` accepts.
+inline constexpr int kMaxPolynomialDegree = 6;
+
+/// Writes the distinct real roots of sum_i coeffs[i] * x^i (coefficients in ASCENDING order) that lie in
+/// (lo, hi] into `roots`, in increasing order, and returns their number. Leading coefficients that are
+/// negligible relative to the others lower the degree. A polynomial that vanishes identically has no
+/// isolated roots and yields 0. Throws std::invalid_argument for a degree above kMaxPolynomialDegree, a
+/// non-finite or empty interval, or `roots` shorter than the degree.
+int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<double> roots);
+
+/// Evaluates sum_i coeffs[i] * x^i (Horner).
+double evaluate_polynomial(std::span<const double> coeffs, double x);
+
+/// Stable roots of a x^2 + b x + c = 0 (no interval), t0 <= t1; false when there is no real root. A
+/// vanishing `a` degrades to the linear root (then t0 == t1).
+bool solve_quadratic(double a, double b, double c, double& t0, double& t1);
+
+}  // namespace snell::geometry

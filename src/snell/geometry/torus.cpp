@@ -1,0 +1,85 @@
+#include "snell/geometry/torus.hpp"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "snell/geometry/polynomial.hpp"
+
+namespace snell::geometry {
+
+Torus::Torus(double major_radius, double minor_radius) : major_(major_radius), minor_(minor_radius) {
+  if (!std::isfinite(major_radius) || !std::isfinite(minor_radius))
+    throw std::invalid_argument("torus: radii must be finite");
+  if (major_radius < 0) throw std::invalid_argument("torus: major radius must not be negative");
+  if (minor_radius <= 0) throw std::invalid_argument("torus: minor radius must be positive");
+}
+
+Bounds3 Torus::bounds() const {
+  const double r = major_ + minor_;
+  return {Vec3(-r, -minor_, -r), Vec3(r, minor_, r)};
+}
+
+LocalHit Torus::make_hit(const Vec3& p, double t) const {
+  LocalHit h;
+  h.t = t;
+  const double rho = std::sqrt(p.x * p.x + p.z * p.z);
+  // Gradient direction: from the nearest point of the core circle to p.
+  Vec3 n = rho > 0 ? p - Vec3(major_ * p.x / rho, 0, major_ * p.z / rho) : Vec3(0, p.y, 0);
+  if (length_squared(n) == 0) n = Vec3(0, 1, 0);
+  h.normal = normalize(n);
+  h.uv = {0.5 + std::atan2(p.z, p.x) * 0.5 * math::kInvPi,
+          0.5 + std::atan2(p.y, rho - major_) * 0.5 * math::kInvPi};
+  return h;
+}
+
+void Torus::gather(const Ray& ray, HitBuffer<4>& hits) const {
+  // Work with a unit direction and an origin moved to the ray's closest approach to the centre: the
+  // quartic's coefficients then stay of the torus' size however far away the ray starts. A point of the
+  // ray is o + u dn with u = f + t |d|.
+  const double dl = length(ray.direction);
+  if (!(dl > 0) || !std::isfinite(dl)) return;
+  const Vec3 dn = ray.direction / dl;
+  const double f = dot(ray.origin, dn);
+  const Vec3 o = ray.origin - f * dn;
+  const double rb = major_ + minor_;
+  const double c2 = rb * rb - length_squared(o);
+  if (c2 < 0) return;
+  const double half = std::sqrt(c2);
+  const double u_lo = std::max(-half * 1.000001, f + hits.t_min() * dl);
+  const double u_hi = std::min(half * 1.000001, f + hits.t_max() * dl);
+  if (!(u_lo < u_hi)) return;
+
+  // (|p|^2 + R^2 - r^2)^2 = 4 R^2 (p_x^2 + p_z^2) with p = o + u dn, |dn| = 1.
+  const double r2 = major_ * major_;
+  const double g = dot(o, dn);
+  const double e = length_squared(o) + r2 - minor_ * minor_;
+  const std::array<double, 5> coeffs{e * e - 4 * r2 * (o.x * o.x + o.z * o.z),
+                                     4 * g * e - 8 * r2 * (o.x * dn.x + o.z * dn.z),
+                                     4 * g * g + 2 * e - 4 * r2 * (dn.x * dn.x + dn.z * dn.z), 4 * g, 1.0};
+  std::array<double, 4> roots{};
+  const int n = real_roots(coeffs, u_lo, u_hi, roots);
+  for (int i = 0; i < n; ++i) {
+    const double t = (roots[i] - f) / dl;
+    if (hits.accepts(t)) hits.add(make_hit(o + roots[i] * dn, t));
+  }
+}
+
+bool Torus::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
+  HitBuffer<4> hits(t_min, t_max);
+  gather(ray, hits);
+  return hits.nearest(hit);
+}
+
+void Torus::all_hits(const Ray& ray, double t_min, double t_max, HitList& out) const {
+  HitBuffer<4> hits(t_min, t_max);
+  gather(ray, hits);
+  hits.append_sorted(out);
+}
+
+bool Torus::inside(const Vec3& p) const {
+  const double rho = std::sqrt(p.x * p.x + p.z * p.z) - major_;
+  return rho * rho + p.y * p.y < minor_ * minor_;
+}
+
+}  // namespace snell::geometry

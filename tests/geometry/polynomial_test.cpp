@@ -1,0 +1,136 @@
+#include "snell/geometry/polynomial.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <stdexcept>
+#include <vector>
+
+using namespace snell::geometry;
+
+namespace {
+// Ascending coefficients of prod (x - r_i).
+std::vector<double> from_roots(const std::vector<double>& rs, double scale = 1) {
+  std::vector<double> c{scale};
+  for (double r : rs) {
+    std::vector<double> next(c.size() + 1, 0.0);
+    for (size_t i = 0; i < c.size(); ++i) {
+      next[i + 1] += c[i];
+      next[i] -= r * c[i];
+    }
+    c = next;
+  }
+  return c;
+}
+
+std::vector<double> roots_in(const std::vector<double>& c, double lo, double hi) {
+  std::array<double, kMaxPolynomialDegree> out{};
+  const int n = real_roots(c, lo, hi, out);
+  return {out.begin(), out.begin() + n};
+}
+}  // namespace
+
+TEST(PolynomialTest, QuarticWithFourSimpleRoots) {
+  const auto r = roots_in(from_roots({-2, 0.5, 1, 3}), -10, 10);
+  ASSERT_EQ(r.size(), 4u);
+  EXPECT_NEAR(r[0], -2, 1e-12);
+  EXPECT_NEAR(r[1], 0.5, 1e-12);
+  EXPECT_NEAR(r[2], 1, 1e-12);
+  EXPECT_NEAR(r[3], 3, 1e-12);
+}
+
+TEST(PolynomialTest, OnlyRootsInsideTheHalfOpenInterval) {
+  const auto c = from_roots({-2, 0.5, 1, 3});
+  const auto r = roots_in(c, 0.5, 3);  // (0.5, 3]: 0.5 excluded, 3 included
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(r[0], 1, 1e-12);
+  EXPECT_NEAR(r[1], 3, 1e-12);
+  EXPECT_TRUE(roots_in(c, 3.5, 100).empty());
+}
+
+TEST(PolynomialTest, DoubleRootIsFoundOnce) {
+  const auto r = roots_in(from_roots({1, 1, 3, -2}), -10, 10);
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_NEAR(r[0], -2, 1e-10);
+  EXPECT_NEAR(r[1], 1, 1e-7);
+  EXPECT_NEAR(r[2], 3, 1e-10);
+}
+
+TEST(PolynomialTest, TwoDoubleRoots) {
+  // (x^2 - 1)^2: touches zero at -1 and 1 without crossing (a ray grazing a torus twice).
+  const auto r = roots_in(from_roots({-1, -1, 1, 1}), -5, 5);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(r[0], -1, 1e-7);
+  EXPECT_NEAR(r[1], 1, 1e-7);
+}
+
+TEST(PolynomialTest, WideRangeOfRootMagnitudes) {
+  const auto r = roots_in(from_roots({1e-3, 1, 1e3, 1e5}), -1e6, 1e6);
+  ASSERT_EQ(r.size(), 4u);
+  EXPECT_NEAR(r[0], 1e-3, 1e-12);
+  EXPECT_NEAR(r[1], 1, 1e-10);
+  EXPECT_NEAR(r[2], 1e3, 1e-8);
+  EXPECT_NEAR(r[3], 1e5, 1e-5);
+}
+
+TEST(PolynomialTest, CloseRootsAreSeparated) {
+  const auto r = roots_in(from_roots({2, 2.0001, 5}), 0, 10);
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_NEAR(r[0], 2, 1e-9);
+  EXPECT_NEAR(r[1], 2.0001, 1e-9);
+  EXPECT_NEAR(r[2], 5, 1e-9);
+}
+
+TEST(PolynomialTest, ScaleOfCoefficientsDoesNotMatter) {
+  for (double scale : {1e-12, -3.0, 1e9}) {
+    const auto r = roots_in(from_roots({-0.25, 0.75, 2}, scale), -1, 3);
+    ASSERT_EQ(r.size(), 3u) << scale;
+    EXPECT_NEAR(r[0], -0.25, 1e-12);
+    EXPECT_NEAR(r[1], 0.75, 1e-12);
+    EXPECT_NEAR(r[2], 2, 1e-12);
+  }
+}
+
+TEST(PolynomialTest, NoRealRoots) {
+  // x^4 + 1 and (x^2 + 1)(x^2 + 4).
+  EXPECT_TRUE(roots_in({1, 0, 0, 0, 1}, -100, 100).empty());
+  EXPECT_TRUE(roots_in({4, 0, 5, 0, 1}, -100, 100).empty());
+}
+
+TEST(PolynomialTest, NegligibleLeadingCoefficientLowersDegree) {
+  // 1e-30 x^4 + (x - 2)(x + 1) behaves as the quadratic on a modest interval.
+  auto c = from_roots({2, -1});
+  c.push_back(0);
+  c.push_back(1e-30);
+  const auto r = roots_in(c, -10, 10);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(r[0], -1, 1e-12);
+  EXPECT_NEAR(r[1], 2, 1e-12);
+}
+
+TEST(PolynomialTest, CubicAndLinear) {
+  const auto r = roots_in(from_roots({-1, 0, 4}), -2, 5);
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_NEAR(r[1], 0, 1e-13);
+  const auto l = roots_in({-3, 2}, 0, 2);
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_DOUBLE_EQ(l[0], 1.5);
+}
+
+TEST(PolynomialTest, BadArgumentsThrow) {
+  std::array<double, 8> out{};
+  const std::vector<double> c{1, 2, 3};
+  EXPECT_THROW(real_roots(c, 1, 0, out), std::invalid_argument);
+  EXPECT_THROW(real_roots(c, 0, std::numeric_limits<double>::infinity(), out), std::invalid_argument);
+  const std::vector<double> big(9, 1.0);
+  EXPECT_THROW(real_roots(big, 0, 1, out), std::invalid_argument);
+  EXPECT_EQ(real_roots(std::vector<double>{0, 0, 0}, 0, 1, out), 0);
+}
+
+TEST(PolynomialTest, QuadraticIsStableForSmallRoot) {
+  double t0, t1;
+  ASSERT_TRUE(solve_quadratic(1, -1e8, 1, t0, t1));
+  EXPECT_NEAR(t0, 1e-8, 1e-20);
+  EXPECT_NEAR(t1, 1e8, 1e-4);
+  EXPECT_FALSE(solve_quadratic(1, 0, 1, t0, t1));
+}
