@@ -51,11 +51,14 @@ std::optional<math::Transform> Parser::parse_transform_item() {
     raw_next();
     const scene::SourceLocation where = peek().where;
     expect("<", "matrix");
+    const bool saved = in_vector_;
+    in_vector_ = true;  // the closing '>' is not a comparison
     double values[12];
     for (int i = 0; i < 12; ++i) {
       values[i] = parse_float();
       if (i < 11) expect(",", "matrix (12 values)");
     }
+    in_vector_ = saved;
     expect(">", "matrix");
     const auto m = math::Transform::pov_matrix(values);
     if (!m) fail(where, "singular matrix: it cannot be inverted");

@@ -156,8 +156,9 @@ ParsedObject Parser::parse_shape(const Token& keyword) {
       }
       o.shape = shapes::smooth_triangle(p[0], p[1], p[2], p[3], p[4], p[5]);
     }
-  } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const ParseError*>(&e)) throw;
+  } catch (const ParseError&) {
+    throw;
+  } catch (const std::exception& e) {
     fail(keyword.where, e.what());
   }
   parse_object_modifiers(o);
@@ -252,7 +253,7 @@ ParsedObject Parser::parse_blob(const Token& keyword) {
   if (components.empty()) fail(keyword.where, "blob has no components");
   try {
     o.shape = shapes::blob(threshold, std::move(components));
-  } catch (const std::runtime_error& e) {
+  } catch (const std::exception& e) {
     fail(keyword.where, e.what());
   }
   parse_object_modifiers(o);
@@ -324,7 +325,7 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
   if (data.faces.empty()) fail(keyword.where, "mesh has no triangles");
   try {
     o.shape = shapes::mesh(std::move(data));
-  } catch (const std::runtime_error& e) {
+  } catch (const std::exception& e) {
     fail(keyword.where, e.what());
   }
   parse_object_modifiers(o);

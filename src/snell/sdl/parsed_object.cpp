@@ -27,7 +27,7 @@ scene::ObjectFlags merge(const scene::ObjectFlags& own, const scene::ObjectFlags
 void flatten_into(const ParsedObject& o, const math::Transform& parent,
                   const std::shared_ptr<const material::Texture>& inherited_texture,
                   const std::shared_ptr<const material::Interior>& inherited_interior,
-                  const scene::ObjectFlags& inherited_flags,
+                  const scene::ObjectFlags& inherited_flags, const std::string& inherited_name,
                   std::vector<std::shared_ptr<const scene::Object>>& objects,
                   std::vector<scene::Light>& lights) {
   const math::Transform to_world = parent * o.transform;
@@ -43,6 +43,7 @@ void flatten_into(const ParsedObject& o, const math::Transform& parent,
   }
   const auto interior = o.interior ? o.interior : inherited_interior;
   const scene::ObjectFlags flags = merge(o.flags, inherited_flags);
+  const std::string& name = o.name.empty() ? inherited_name : o.name;
 
   if (o.light) {
     scene::Light light = *o.light;
@@ -59,19 +60,19 @@ void flatten_into(const ParsedObject& o, const math::Transform& parent,
     object->texture = texture ? texture : material::Texture::default_texture();
     object->interior = interior;
     object->flags = flags;
-    object->name = o.name;
+    object->name = name;
     object->where = o.where;
     objects.push_back(std::move(object));
   }
   for (const auto& child : o.children)
-    flatten_into(child, to_world, texture, interior, flags, objects, lights);
+    flatten_into(child, to_world, texture, interior, flags, name, objects, lights);
 }
 
 }  // namespace
 
 void flatten(const ParsedObject& object, std::vector<std::shared_ptr<const scene::Object>>& objects,
              std::vector<scene::Light>& lights) {
-  flatten_into(object, math::Transform{}, nullptr, nullptr, scene::ObjectFlags{}, objects, lights);
+  flatten_into(object, math::Transform{}, nullptr, nullptr, scene::ObjectFlags{}, "", objects, lights);
 }
 
 }  // namespace snell::sdl

@@ -1,7 +1,5 @@
 #include "snell/sdl/shape_factory.hpp"
 
-#include <stdexcept>
-
 #include "snell/geometry/box.hpp"
 #include "snell/geometry/cone.hpp"
 #include "snell/geometry/cylinder.hpp"
@@ -11,41 +9,7 @@
 #include "snell/geometry/torus.hpp"
 #include "snell/geometry/triangle.hpp"
 
-// Temporary seam while the geometry engineers land their files: __has_include on the implementation
-// tells whether the constructor will link. Remove the guards once every shape is on main (a stale
-// ccache/ninja object may need `touch` of this file after the shapes arrive).
-#if __has_include("snell/geometry/box.cpp")
-#define SNELL_HAS_BOX 1
-#endif
-#if __has_include("snell/geometry/cylinder.cpp")
-#define SNELL_HAS_CYLINDER 1
-#endif
-#if __has_include("snell/geometry/cone.cpp")
-#define SNELL_HAS_CONE 1
-#endif
-#if __has_include("snell/geometry/disc.cpp")
-#define SNELL_HAS_DISC 1
-#endif
-#if __has_include("snell/geometry/torus.cpp")
-#define SNELL_HAS_TORUS 1
-#endif
-#if __has_include("snell/geometry/triangle.cpp")
-#define SNELL_HAS_TRIANGLE 1
-#endif
-#if __has_include("snell/geometry/mesh.cpp")
-#define SNELL_HAS_MESH 1
-#endif
-#if __has_include("snell/geometry/blob.cpp")
-#define SNELL_HAS_BLOB 1
-#endif
-
 namespace snell::sdl::shapes {
-
-namespace {
-[[noreturn]] void unavailable(const char* name) {
-  throw std::runtime_error(std::string(name) + " is not available in this build yet");
-}
-}  // namespace
 
 ShapePtr sphere(const Vec3& center, double radius) {
   return std::make_shared<geometry::Sphere>(center, radius);
@@ -54,84 +18,41 @@ ShapePtr plane(const Vec3& normal, double distance) {
   return std::make_shared<geometry::Plane>(normal, distance);
 }
 
-ShapePtr box([[maybe_unused]] const Vec3& a, [[maybe_unused]] const Vec3& b) {
-#ifdef SNELL_HAS_BOX
+ShapePtr box(const Vec3& a, const Vec3& b) {
   return std::make_shared<geometry::Box>(a, b);
-#else
-  unavailable("box");
-#endif
 }
 
-ShapePtr cylinder([[maybe_unused]] const Vec3& base, [[maybe_unused]] const Vec3& cap,
-                  [[maybe_unused]] double radius, [[maybe_unused]] bool open) {
-#ifdef SNELL_HAS_CYLINDER
+ShapePtr cylinder(const Vec3& base, const Vec3& cap, double radius, bool open) {
   return std::make_shared<geometry::Cylinder>(base, cap, radius, open);
-#else
-  unavailable("cylinder");
-#endif
 }
 
-ShapePtr cone([[maybe_unused]] const Vec3& base, [[maybe_unused]] double base_radius,
-              [[maybe_unused]] const Vec3& cap, [[maybe_unused]] double cap_radius,
-              [[maybe_unused]] bool open) {
-#ifdef SNELL_HAS_CONE
+ShapePtr cone(const Vec3& base, double base_radius, const Vec3& cap, double cap_radius, bool open) {
   return std::make_shared<geometry::Cone>(base, base_radius, cap, cap_radius, open);
-#else
-  unavailable("cone");
-#endif
 }
 
-ShapePtr disc([[maybe_unused]] const Vec3& center, [[maybe_unused]] const Vec3& normal,
-              [[maybe_unused]] double radius, [[maybe_unused]] double hole_radius) {
-#ifdef SNELL_HAS_DISC
+ShapePtr disc(const Vec3& center, const Vec3& normal, double radius, double hole_radius) {
   return std::make_shared<geometry::Disc>(center, normal, radius, hole_radius);
-#else
-  unavailable("disc");
-#endif
 }
 
-ShapePtr torus([[maybe_unused]] double major, [[maybe_unused]] double minor) {
-#ifdef SNELL_HAS_TORUS
+ShapePtr torus(double major, double minor) {
   return std::make_shared<geometry::Torus>(major, minor);
-#else
-  unavailable("torus");
-#endif
 }
 
-ShapePtr triangle([[maybe_unused]] const Vec3& a, [[maybe_unused]] const Vec3& b,
-                  [[maybe_unused]] const Vec3& c) {
-#ifdef SNELL_HAS_TRIANGLE
+ShapePtr triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   return std::make_shared<geometry::Triangle>(a, b, c);
-#else
-  unavailable("triangle");
-#endif
 }
 
-ShapePtr smooth_triangle([[maybe_unused]] const Vec3& a, [[maybe_unused]] const Vec3& na,
-                         [[maybe_unused]] const Vec3& b, [[maybe_unused]] const Vec3& nb,
-                         [[maybe_unused]] const Vec3& c, [[maybe_unused]] const Vec3& nc) {
-#ifdef SNELL_HAS_TRIANGLE
+ShapePtr smooth_triangle(const Vec3& a, const Vec3& na, const Vec3& b, const Vec3& nb, const Vec3& c,
+                         const Vec3& nc) {
   return std::make_shared<geometry::Triangle>(a, na, b, nb, c, nc);
-#else
-  unavailable("smooth_triangle");
-#endif
 }
 
-ShapePtr mesh([[maybe_unused]] geometry::MeshData data) {
-#ifdef SNELL_HAS_MESH
+ShapePtr mesh(geometry::MeshData data) {
   return std::make_shared<geometry::Mesh>(std::move(data));
-#else
-  unavailable("mesh");
-#endif
 }
 
-ShapePtr blob([[maybe_unused]] double threshold,
-              [[maybe_unused]] std::vector<geometry::BlobComponent> components) {
-#ifdef SNELL_HAS_BLOB
+ShapePtr blob(double threshold, std::vector<geometry::BlobComponent> components) {
   return std::make_shared<geometry::Blob>(threshold, std::move(components));
-#else
-  unavailable("blob");
-#endif
 }
 
 }  // namespace snell::sdl::shapes

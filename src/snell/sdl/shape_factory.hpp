@@ -1,6 +1,6 @@
 #pragma once
-// The one place where the language constructs geometry. Until every shape's implementation has landed,
-// a shape whose .cpp is absent from this checkout is reported as unavailable instead of failing the link.
+// The one place where the language constructs geometry: a new shape is one function here plus its
+// keyword in objects.cpp.
 #include <memory>
 #include <vector>
 
@@ -13,7 +13,7 @@ namespace snell::sdl::shapes {
 using ShapePtr = std::shared_ptr<const geometry::Shape>;
 using math::Vec3;
 
-/// Each throws std::runtime_error when that shape is not built into this checkout.
+/// Shapes may throw std::invalid_argument / std::runtime_error on degenerate input; the parser reports it.
 ShapePtr sphere(const Vec3& center, double radius);
 ShapePtr plane(const Vec3& normal, double distance);
 ShapePtr box(const Vec3& a, const Vec3& b);

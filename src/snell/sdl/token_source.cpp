@@ -349,7 +349,8 @@ void Parser::directive_macro(const Token& d) {
   macro->body_start = frames_.back().pos;
   skip_to({"end"}, d);
   // Macros are always global in POV-Ray 3.7.
-  scopes_.front()[macro->name] = Value{std::shared_ptr<const Macro>(std::move(macro))};
+  const std::string macro_name = macro->name;
+  scopes_.front()[macro_name] = Value{std::shared_ptr<const Macro>(std::move(macro))};
 }
 
 void Parser::invoke_macro(const Token& name, const std::shared_ptr<const Macro>& macro) {
