@@ -39,6 +39,7 @@ TEST(SdlErrors, CommonMistakes) {
   has("camera { location 0 look_at 0 }", "camera location and look_at are the same point");
   has("cylinder { 0, 0, 1 }", "cylinder base and cap are the same point");
   has("sphere { 0, 1 } @", "unexpected character '@'");
+  has("sphere { 0, Undeclared }", "test.pov:1:13: error: unknown identifier 'Undeclared'");
 }
 
 TEST(SdlErrors, ErrorsInIncludedFilesNameTheIncludeSite) {

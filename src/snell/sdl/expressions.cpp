@@ -530,6 +530,14 @@ Numeric Parser::parse_color_keywords() {
 
 Numeric Parser::parse_function(const Token& name) {
   const std::string& f = name.text;
+  static const char* const functions[] = {
+      "abs",        "min",   "max",    "pow",     "sqrt",         "sqr",    "exp",     "log",     "ln",
+      "sin",        "cos",   "tan",    "sinh",    "cosh",         "tanh",   "asin",    "acos",    "atan",
+      "atan2",      "floor", "ceil",   "int",     "mod",          "div",    "radians", "degrees", "vlength",
+      "vnormalize", "vdot",  "vcross", "vrotate", "vaxis_rotate", "select", "strlen",  "val",     "asc"};
+  bool known = false;
+  for (const char* k : functions) known = known || f == k;
+  if (!known) fail(name.where, "unknown identifier '" + f + "'");
   expect("(", ("function " + f).c_str());
   std::vector<Numeric> args;
   std::vector<scene::SourceLocation> where;

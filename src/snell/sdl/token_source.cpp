@@ -225,7 +225,13 @@ void Parser::handle_directive(const Token& d) {
 }
 
 void Parser::directive_declare(const Token& d, bool local) {
-  const Token name = raw_next();
+  Token name = raw_next();
+  if (name.is_word("deprecated")) {
+    // POV-Ray 3.7 `#declare deprecated [once] "message" Name = ...`: the message is for users of Name.
+    if (raw_peek().is_word("once")) raw_next();
+    parse_string();
+    name = raw_next();
+  }
   if (name.kind != Token::Kind::identifier) fail(name.where, "expected an identifier after #" + d.text);
   static const char* const reserved[] = {"x",  "y",       "z",     "t",           "u",           "v",
                                          "pi", "true",    "false", "on",          "off",         "yes",
