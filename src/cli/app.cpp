@@ -35,6 +35,7 @@ const char* kPovHelp =
     "POV-Ray form:\n"
     "  snell +Iscene.pov [+Oout.png] [+W640] [+H480] [+A[0.3]] [+R3] [+J[1.0]] [+Ldir] [+WTn]\n"
     "        [+FN|+FN16|+FE|+FH] [-D] [Declare=NAME=value] [--quiet] [--stats] [--accel NAME]\n"
+    "  snell --parse-only scene.pov   parses and builds the scene, prints a summary\n"
     "  -A / -J turn anti-aliasing / jitter off. Unknown or unsupported flags are warned about, never fatal.\n"
     "Exit codes: 0 ok, 1 scene error, 2 bad command line, 3 output error, 130 interrupted.\n";
 
@@ -61,6 +62,7 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   render->add_flag("--quiet", o.quiet, "no progress, warnings or statistics");
   render->add_flag("--stats", o.stats, "print statistics even with --quiet");
+  render->add_flag("--parse-only", o.parse_only, "parse and build the scene, print a summary, render nothing");
   return app;
 }
 
@@ -87,6 +89,11 @@ int render(CliOptions& o) {
   po.declares = o.declares;
   const scene::Scene scene = sdl::parse_scene_file(o.input, po);
   const double parse_s = seconds_since(t_parse);
+  if (o.parse_only) {
+    fmt::print("snell: parsed {}: {} objects, {} lights, parse {:.3f}s\n", o.input.string(), scene.objects.size(),
+               scene.lights.size(), parse_s);
+    return kOk;
+  }
 
   const auto t_build = Clock::now();
   const auto accelerator = build_accelerator(o.accel, scene);

@@ -32,6 +32,8 @@ struct CliOptions {
   std::string extension = ".png";
   bool quiet = false;
   bool stats = false;
+  /// Parse and build the scene, print a summary, render nothing (`--parse-only`).
+  bool parse_only = false;
   std::vector<std::filesystem::path> library_paths;
   std::map<std::string, double> declares;
   /// Warnings found while reading the command line (unknown or unsupported flags), printed unless quiet.

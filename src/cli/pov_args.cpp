@@ -65,6 +65,8 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& args) {
         o.quiet = true;
       } else if (name == "--stats") {
         o.stats = true;
+      } else if (name == "--parse-only") {
+        o.parse_only = true;
       } else if (name == "--threads") {
         o.threads = parse_int(name, eq == std::string::npos ? next_value(name) : value);
       } else if (name == "--accel") {
