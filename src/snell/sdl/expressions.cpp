@@ -193,6 +193,14 @@ Value Parser::parse_rvalue() {
       raw_next();
       return Value{parse_pigment_block(nullptr)};
     }
+    if (word.text == "color_map" || word.text == "colour_map") {
+      raw_next();
+      return Value{parse_color_map()};
+    }
+    if (word.text == "pigment_map") {
+      raw_next();
+      return Value{parse_pigment_map()};
+    }
     if (word.text == "finish") {
       raw_next();
       return Value{parse_finish_block(material::Finish{})};
@@ -472,6 +480,7 @@ Numeric Parser::parse_color_keywords() {
     const scene::SourceLocation where = t.where;
     const std::string w = t.kind == Token::Kind::identifier ? t.text : std::string();
     if (w == "color") {
+      if (any) return c;  // a second `color` starts the next colour (old colour_map `[a b color c1 color c2]`)
       raw_next();
       continue;
     }
