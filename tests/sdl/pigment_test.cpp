@@ -105,7 +105,7 @@ TEST(SdlPigment, HexagonAndBrickTakeTheirEntries) {
 }
 
 TEST(SdlPigment, BadPatternsAreClearErrors) {
-  EXPECT_NE(sdl::test::error_of("sphere { 0, 1 pigment { marble } }").find("not supported"),
+  EXPECT_NE(sdl::test::error_of("sphere { 0, 1 pigment { crackle } }").find("not supported"),
             std::string::npos);
   EXPECT_NE(sdl::test::error_of("sphere { 0, 1 pigment { checker color_map { [0 rgb 0] } } }")
                 .find("value pattern"),

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "snell/sdl/parser.hpp"
+#include "snell/texture/noise_patterns.hpp"
 #include "snell/texture/value_patterns.hpp"
 
 namespace snell::sdl {
@@ -24,11 +25,11 @@ PigmentPtr solid(const material::Rgbft& c) {
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
   static const char* const patterns[] = {
-      "agate",      "average",  "bumps",         "cells",     "crackle",   "density_file",    "dents",
-      "facets",     "function", "granite",       "image_map", "julia",     "mandel",          "marble",
-      "pavement",   "quilted",  "ripples",       "spiral1",   "spiral2",   "square",          "tiling",
-      "triangular", "waves",    "wood",          "wrinkles",  "object",    "pigment_pattern", "slope",
-      "aoi",        "cubic",    "image_pattern", "magnet",    "potential", "spherical_warp"};
+      "average",    "bumps",    "cells",         "crackle", "density_file",    "dents",
+      "facets",     "function", "image_map",     "julia",   "mandel",          "pavement",
+      "quilted",    "ripples",  "spiral1",       "spiral2", "square",          "tiling",
+      "triangular", "waves",    "wrinkles",      "object",  "pigment_pattern", "slope",
+      "aoi",        "cubic",    "image_pattern", "magnet",  "potential",       "spherical_warp"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -44,6 +45,8 @@ struct Parser::PigmentBuilder {
   texture::PatternSpec spec;  // warps without the classic turbulence, which is kept apart:
   std::optional<texture::TurbulenceParams> turbulence;
   std::vector<texture::PigmentMap::Entry> pigment_entries;
+  std::string special;  // marble, wood, agate: patterns that use the turbulence themselves
+  double agate_turb = 1.0;
   bool brick = false;
   math::Vec3 brick_size{8, 3, 4.5};
   double mortar = 0.5;
@@ -98,7 +101,12 @@ struct Parser::PigmentBuilder {
     if (!patterned) return plain;
     texture::PatternSpec out = spec;
     if (brick) out.block_pattern = std::make_shared<texture::BrickPattern>(brick_size, mortar);
-    if (turbulence) {
+    if (special == "marble") out.value_pattern = std::make_shared<texture::MarblePattern>(turbulence);
+    if (special == "wood") out.value_pattern = std::make_shared<texture::WoodPattern>(turbulence);
+    if (special == "agate")
+      out.value_pattern = std::make_shared<texture::AgatePattern>(
+          turbulence.value_or(texture::TurbulenceParams{}), agate_turb);
+    if (turbulence && special.empty()) {
       texture::WarpList warps;
       warps.push(std::make_shared<texture::TurbulenceWarp>(*turbulence));
       for (const auto& w : spec.warps.warps()) warps.push(w);
@@ -177,11 +185,35 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     value = std::make_shared<texture::LeopardPattern>();
   } else if (w == "bozo" || w == "spotted") {
     value = std::make_shared<texture::BozoPattern>();
+  } else if (w == "granite") {
+    value = std::make_shared<texture::GranitePattern>();
+  } else if (w == "marble" || w == "wood" || w == "agate") {
+    value = std::make_shared<texture::GranitePattern>();  // replaced in build(), with the turbulence
   }
   if (value) {
     if (w != "gradient") raw_next();
     b.start_pattern();
     b.spec.value_pattern = std::move(value);
+    // POV-Ray's per-pattern defaults (pattern.cpp default maps and waves).
+    using E = texture::ColorMap::Entry;
+    if (w == "marble" || w == "wood" || w == "agate") b.special = w;
+    if (w == "marble" || w == "wood") b.spec.wave.wave = texture::Wave::triangle;
+    if (w == "marble")
+      b.spec.color_map =
+          texture::ColorMap({E{0.0, rgb(0.9, 0.8, 0.8)}, E{0.9, rgb(0.9, 0.08, 0.08)}, E{0.9, rgb(0, 0, 0)}});
+    if (w == "wood")
+      b.spec.color_map = texture::ColorMap({E{0.6, rgb(0.666, 0.312, 0.2)}, E{0.6, rgb(0.4, 0.1333, 0.066)}});
+    if (w == "agate")
+      b.spec.color_map = texture::ColorMap({E{0.0, rgb(1, 1, 1)}, E{0.5, rgb(0.95, 0.75, 0.5)},
+                                            E{0.5, rgb(0.9, 0.7, 0.5)}, E{0.6, rgb(0.9, 0.7, 0.4)},
+                                            E{0.6, rgb(1.0, 0.7, 0.4)}, E{1.0, rgb(0.6, 0.3, 0.0)}});
+    if (w == "bozo" || w == "spotted")
+      b.spec.color_map =
+          texture::ColorMap({E{0.4, rgb(1, 1, 1)}, E{0.4, rgb(0, 1, 0)}, E{0.6, rgb(0, 1, 0)},
+                             E{0.6, rgb(0, 0, 1)}, E{0.8, rgb(0, 0, 1)}, E{0.8, rgb(1, 0, 0)}});
+    if (w == "radial")
+      b.spec.color_map = texture::ColorMap(
+          {E{0.0, rgb(0, 1, 1)}, E{0.333, rgb(1, 1, 0)}, E{0.666, rgb(1, 0, 1)}, E{1.0, rgb(0, 1, 1)}});
     return true;
   }
 
@@ -304,6 +336,9 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     if (!b.brick) fail(t.where, "mortar is only for the brick pattern");
     if (mortar < 0) fail(t.where, "mortar must not be negative");
     b.mortar = mortar;
+  } else if (w == "agate_turb") {
+    raw_next();
+    b.agate_turb = parse_float();
   } else if (w == "quick_color" || w == "quick_colour") {
     raw_next();
     parse_color();
