@@ -3,6 +3,8 @@
 // "Pigment", "Color Maps", "Pigment Maps").
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "sdl_test_util.hpp"
 
 using namespace snell;
@@ -102,6 +104,17 @@ TEST(SdlPigment, HexagonAndBrickTakeTheirEntries) {
       "box { -1, 1 pigment { brick rgb 1, rgb <1, 0, 0> brick_size <2, 1, 2> mortar 0.2 } }";
   expect_rgb(color_at(brick, {1, 0.5, 1}), 1, 0, 0);
   expect_rgb(color_at(brick, {1, -0.15, 1}), 1, 1, 1);  // the mortar layer
+}
+
+TEST(SdlPigment, WarpTurbulenceMovesThePatternPoint) {
+  const std::string plain = "sphere { 0, 1 pigment { gradient x } }";
+  const std::string warped = "sphere { 0, 1 pigment { gradient x warp { turbulence 0.5 octaves 3 } } }";
+  const math::Vec3 p{0.3, 0.41, 0.77};
+  EXPECT_NEAR(color_at(plain, p).rgb.r, 0.3, 1e-9);
+  EXPECT_GT(std::fabs(color_at(warped, p).rgb.r - 0.3), 1e-4);
+  EXPECT_NE(
+      sdl::test::error_of("sphere { 0, 1 pigment { onion warp { black_hole 0, 1 } } }").find("black_hole"),
+      std::string::npos);
 }
 
 TEST(SdlPigment, BadPatternsAreClearErrors) {

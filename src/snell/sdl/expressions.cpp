@@ -207,7 +207,15 @@ Value Parser::parse_rvalue() {
     }
     if (word.text == "texture") {
       raw_next();
-      return Value{parse_texture_block()};
+      Value first{parse_texture_block()};
+      // Layered textures (`texture {..} texture {..}`, POV-Ray reference "Layered Textures") are not
+      // composited yet: the bottom layer, usually the opaque one, stands for the whole stack.
+      while (peek_after_value().is_word("texture")) {
+        warn(peek().where, "layered textures are not supported yet; only the first layer is used");
+        raw_next();
+        parse_texture_block();
+      }
+      return first;
     }
     if (word.text == "interior") {
       raw_next();

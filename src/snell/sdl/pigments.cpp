@@ -336,6 +336,35 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     if (!b.brick) fail(t.where, "mortar is only for the brick pattern");
     if (mortar < 0) fail(t.where, "mortar must not be negative");
     b.mortar = mortar;
+  } else if (w == "warp") {
+    // `warp { turbulence ... }`: turbulence at this place in the warp list (POV-Ray reference, "Warps").
+    raw_next();
+    expect("{", "warp");
+    const Token kind = peek();
+    if (!kind.is_word("turbulence"))
+      fail(kind.where, "warp '" + kind.text + "' is not supported yet (only turbulence)");
+    raw_next();
+    texture::TurbulenceParams params;
+    const Numeric n = parse_numeric();
+    params.amount = n.size == 1 ? math::Vec3{n.x(), n.x(), n.x()} : n.vec3();
+    for (;;) {
+      const Token m = peek();
+      if (m.is_symbol("}")) {
+        raw_next();
+        break;
+      }
+      raw_next();
+      if (m.is_word("octaves"))
+        params.octaves = static_cast<int>(std::clamp(parse_float(), 1.0, 10.0));
+      else if (m.is_word("omega"))
+        params.omega = parse_float();
+      else if (m.is_word("lambda"))
+        params.lambda = parse_float();
+      else
+        fail(m.where, "unexpected '" + m.text + "' in warp");
+    }
+    if (!b.patterned) return true;  // a plain colour is the same everywhere
+    b.spec.warps.push(std::make_shared<texture::TurbulenceWarp>(params));
   } else if (w == "agate_turb") {
     raw_next();
     b.agate_turb = parse_float();
