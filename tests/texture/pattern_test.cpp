@@ -3,6 +3,7 @@
 #include "snell/texture/color_map.hpp"
 #include "snell/texture/pattern.hpp"
 #include "snell/texture/pattern_pigment.hpp"
+#include "snell/texture/value_patterns.hpp"
 #include "snell/texture/wave.hpp"
 
 using namespace snell;
@@ -59,7 +60,10 @@ TEST(ColorMapTest, InterpolatesLinearlyAndClampsOutside) {
 TEST(BlockPigmentTest, CheckerPicksSubPigments) {
   auto red = std::make_shared<material::SolidPigment>(material::Rgbft{math::Color(1, 0, 0)});
   auto blue = std::make_shared<material::SolidPigment>(material::Rgbft{math::Color(0, 0, 1)});
-  const BlockPigment pigment(std::make_shared<CheckerPattern>(), {red, blue});
+  PatternSpec spec;
+  spec.block_pattern = std::make_shared<CheckerPattern>();
+  spec.block_entries = {red, blue};
+  const PatternPigment pigment(spec);
   EXPECT_EQ(pigment.at({{0.5, 0.5, 0.5}, {}, {}}).rgb, math::Color(1, 0, 0));
   EXPECT_EQ(pigment.at({{1.5, 0.5, 0.5}, {}, {}}).rgb, math::Color(0, 0, 1));
 }

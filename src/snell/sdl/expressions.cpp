@@ -193,13 +193,29 @@ Value Parser::parse_rvalue() {
       raw_next();
       return Value{parse_pigment_block(nullptr)};
     }
+    if (word.text == "color_map" || word.text == "colour_map") {
+      raw_next();
+      return Value{parse_color_map()};
+    }
+    if (word.text == "pigment_map") {
+      raw_next();
+      return Value{parse_pigment_map()};
+    }
     if (word.text == "finish") {
       raw_next();
       return Value{parse_finish_block(material::Finish{})};
     }
     if (word.text == "texture") {
       raw_next();
-      return Value{parse_texture_block()};
+      Value first{parse_texture_block()};
+      // Layered textures (`texture {..} texture {..}`, POV-Ray reference "Layered Textures") are not
+      // composited yet: the bottom layer, usually the opaque one, stands for the whole stack.
+      while (peek_after_value().is_word("texture")) {
+        warn(peek().where, "layered textures are not supported yet; only the first layer is used");
+        raw_next();
+        parse_texture_block();
+      }
+      return first;
     }
     if (word.text == "interior") {
       raw_next();
@@ -472,6 +488,7 @@ Numeric Parser::parse_color_keywords() {
     const scene::SourceLocation where = t.where;
     const std::string w = t.kind == Token::Kind::identifier ? t.text : std::string();
     if (w == "color") {
+      if (any) return c;  // a second `color` starts the next colour (old colour_map `[a b color c1 color c2]`)
       raw_next();
       continue;
     }

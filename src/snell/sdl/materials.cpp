@@ -1,26 +1,8 @@
 // pigment, finish, interior, texture and transform blocks (POV-Ray 3.7 reference, "Textures",
-// "Interior", "Transformations"). Pigments are solid colours for now; patterns come with texture/.
+// "Interior", "Transformations"). Pigments and their patterns are parsed in pigments.cpp.
 #include "snell/sdl/parser.hpp"
 
 namespace snell::sdl {
-
-namespace {
-
-bool is_pattern_keyword(const std::string& w) {
-  static const char* const patterns[] = {
-      "agate",     "average", "boxed",       "bozo",         "brick",           "bumps",   "cells",
-      "checker",   "crackle", "cylindrical", "density_file", "dents",           "facets",  "function",
-      "gradient",  "granite", "hexagon",     "image_map",    "julia",           "leopard", "mandel",
-      "marble",    "onion",   "pavement",    "planar",       "quilted",         "radial",  "ripples",
-      "spherical", "spiral1", "spiral2",     "spotted",      "square",          "tiling",  "triangular",
-      "waves",     "wood",    "wrinkles",    "object",       "pigment_pattern", "slope",   "aoi",
-      "cubic"};
-  for (const char* p : patterns)
-    if (w == p) return true;
-  return false;
-}
-
-}  // namespace
 
 std::optional<math::Transform> Parser::parse_transform_item() {
   const Token t = peek();
@@ -107,42 +89,6 @@ math::Transform Parser::parse_transform_block() {
     }
     fail(item.where, "unexpected '" + item.text + "' in transform");
   }
-}
-
-std::shared_ptr<const material::Pigment> Parser::parse_pigment_block(
-    const std::shared_ptr<const material::Pigment>& base) {
-  expect("{", "pigment");
-  std::shared_ptr<const material::Pigment> pigment = base;
-  for (;;) {
-    const Token t = peek();
-    if (t.is_symbol("}")) {
-      raw_next();
-      break;
-    }
-    if (t.kind == Token::Kind::identifier) {
-      if (const Value* v = lookup(t.text)) {
-        if (const auto* p = std::get_if<std::shared_ptr<const material::Pigment>>(&v->data)) {
-          pigment = *p;
-          raw_next();
-          continue;
-        }
-      }
-      if (is_pattern_keyword(t.text))
-        fail(t.where, "pattern pigment '" + t.text + "' is not supported yet (only solid colours)");
-      if (parse_transform_item()) continue;  // a solid colour looks the same however it is moved
-      if (t.text == "quick_color") {
-        raw_next();
-        parse_color();
-        continue;
-      }
-    }
-    if (starts_numeric()) {
-      pigment = std::make_shared<material::SolidPigment>(parse_color());
-      continue;
-    }
-    fail(t.where, "unexpected '" + t.text + "' in pigment");
-  }
-  return pigment ? pigment : std::make_shared<material::SolidPigment>(material::Rgbft{});
 }
 
 void Parser::parse_reflection(material::Finish& f) {

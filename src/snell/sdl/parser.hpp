@@ -120,6 +120,19 @@ class Parser {
   std::optional<math::Transform> parse_transform_item();
   math::Transform parse_transform_block();
 
+  // ---- pattern pigments and maps (pigments.cpp) ----
+  struct PigmentBuilder;
+  /// The inside of a pigment block up to `closer` ("}" for `pigment {`, "]" for a pigment_map entry).
+  void parse_pigment_body(PigmentBuilder& builder, const char* closer);
+  /// A pattern keyword and its arguments (block pattern entries, gradient's vector) when one is next.
+  bool parse_pattern_type(PigmentBuilder& builder);
+  /// A pattern modifier (map, wave, turbulence, transform, brick size...) when one is next.
+  bool parse_pattern_modifier(PigmentBuilder& builder);
+  /// `{ [IDENT] [v colour] ... }` after `color_map`.
+  std::shared_ptr<const texture::ColorMap> parse_color_map();
+  /// `{ [IDENT] [v pigment-body] ... }` after `pigment_map`.
+  std::shared_ptr<const texture::PigmentMap> parse_pigment_map();
+
   // ---- objects (objects.cpp) ----
   std::optional<ParsedObject> parse_object_if_any();
   ParsedObject parse_object(const Token& keyword);

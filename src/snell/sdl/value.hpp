@@ -13,6 +13,8 @@
 #include "snell/scene/camera.hpp"
 #include "snell/sdl/parsed_object.hpp"
 #include "snell/sdl/token.hpp"
+#include "snell/texture/color_map.hpp"
+#include "snell/texture/pattern_pigment.hpp"
 
 namespace snell::sdl {
 
@@ -41,12 +43,13 @@ struct Value {
   std::variant<Numeric, std::string, math::Transform, std::shared_ptr<const material::Pigment>,
                std::shared_ptr<const material::Texture>, material::Finish,
                std::shared_ptr<const material::Interior>, ParsedObject, std::shared_ptr<const Macro>,
-               scene::CameraSpec>
+               scene::CameraSpec, std::shared_ptr<const texture::ColorMap>,
+               std::shared_ptr<const texture::PigmentMap>>
       data;
 
   const char* type_name() const {
-    static const char* names[] = {"number", "string",   "transform", "pigment", "texture",
-                                  "finish", "interior", "object",    "macro",   "camera"};
+    static const char* names[] = {"number",   "string", "transform", "pigment", "texture",   "finish",
+                                  "interior", "object", "macro",     "camera",  "color_map", "pigment_map"};
     if (const auto* n = std::get_if<Numeric>(&data))
       return n->color ? "color" : (n->size == 1 ? "float" : "vector");
     return names[data.index()];

@@ -2,7 +2,6 @@
 // POV-Ray patterns (POV-Ray 3.7 reference, "Patterns"). Two families:
 // - value patterns map a point to a number in [0,1] that a colour/pigment map turns into colour;
 // - block patterns (checker, hexagon, brick) pick one of a fixed list of pigments.
-#include <memory>
 
 #include "snell/math/vec3.hpp"
 
@@ -33,14 +32,25 @@ class CheckerPattern final : public BlockPattern {
   int block_count() const override { return 2; }
 };
 
-/// `gradient <v>`: the value grows along v, repeating every 1/|v| units (ramp wave by default).
-class GradientPattern final : public ValuePattern {
+/// `hexagon`: a tiling of the x-z plane by hexagons of side 1 in three entries, no two neighbours alike;
+/// the pattern is constant along y. Entry 0 covers the hexagon centred on the origin.
+class HexagonPattern final : public BlockPattern {
  public:
-  explicit GradientPattern(const Vec3& direction) : direction_(direction) {}
-  double value(const Vec3& p) const override;
+  int block(const Vec3& p) const override;
+  int block_count() const override { return 3; }
+};
+
+/// `brick`: entry 0 is the mortar, entry 1 the bricks; bricks of `size` (default <8,3,4.5>) in courses
+/// offset by half a brick, joints `mortar` wide (default 0.5).
+class BrickPattern final : public BlockPattern {
+ public:
+  explicit BrickPattern(const Vec3& size = {8, 3, 4.5}, double mortar = 0.5);
+  int block(const Vec3& p) const override;
+  int block_count() const override { return 2; }
 
  private:
-  Vec3 direction_;
+  Vec3 size_;
+  double mortar_;
 };
 
 }  // namespace snell::texture

@@ -14,26 +14,28 @@ struct WaveShaping {
   double exponent = 1;  // poly_wave
 
   double apply(double value) const {
-    double v = value * frequency + phase;
+    constexpr double kPi = 3.14159265358979323846;
+    double v = value;
+    // POV-Ray folds with a period slightly above 1 so that a raw value of exactly 1 (the centre of
+    // `spherical`, say) keeps the last map entry instead of wrapping to the first. A zero frequency
+    // leaves the value unfolded.
+    if (frequency != 0) v = std::fmod(v * frequency + phase, 1.00001);
+    if (v < 0) v -= std::floor(v);  // negative values (and frequencies) wrap into [0,1)
     switch (wave) {
       case Wave::ramp:
-        return v - std::floor(v);
+        return v;
       case Wave::triangle: {
-        v -= std::floor(v);
-        return v < 0.5 ? 2 * v : 2 - 2 * v;
+        const double f = v - std::floor(v);
+        return f < 0.5 ? 2 * f : 2 * (1 - f);
       }
       case Wave::sine:
-        return 0.5 + 0.5 * std::sin(v * 2 * 3.14159265358979323846);
+        return 0.5 + 0.5 * std::sin(v * 2 * kPi);
       case Wave::scallop:
-        return std::fabs(std::sin(v * 3.14159265358979323846));
-      case Wave::cubic: {
-        v -= std::floor(v);
+        return std::fabs(std::sin(v * kPi));
+      case Wave::cubic:
         return v * v * (3 - 2 * v);
-      }
-      case Wave::poly: {
-        v -= std::floor(v);
+      case Wave::poly:
         return std::pow(v, exponent);
-      }
     }
     return v;
   }

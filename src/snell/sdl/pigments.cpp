@@ -1,0 +1,481 @@
+// Pattern pigments, colour maps and pigment maps (POV-Ray 3.7 reference, "Pigment", "Patterns",
+// "Color Maps", "Pigment Maps", "Pattern Modifiers"). The parser fills a PigmentBuilder and turns it into
+// a texture::PatternPigment (or keeps a plain pigment when no pattern was named).
+#include <algorithm>
+#include <stdexcept>
+
+#include "snell/sdl/parser.hpp"
+#include "snell/texture/noise_patterns.hpp"
+#include "snell/texture/value_patterns.hpp"
+
+namespace snell::sdl {
+
+using texture::PigmentPtr;
+
+namespace {
+
+material::Rgbft rgb(double r, double g, double b) {
+  return material::Rgbft{math::Color(r, g, b), 0, 0};
+}
+
+PigmentPtr solid(const material::Rgbft& c) {
+  return std::make_shared<material::SolidPigment>(c);
+}
+
+/// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
+bool is_unsupported_pattern(const std::string& w) {
+  static const char* const patterns[] = {
+      "average",    "bumps",    "cells",         "crackle", "density_file",    "dents",
+      "facets",     "function", "image_map",     "julia",   "mandel",          "pavement",
+      "quilted",    "ripples",  "spiral1",       "spiral2", "square",          "tiling",
+      "triangular", "waves",    "wrinkles",      "object",  "pigment_pattern", "slope",
+      "aoi",        "cubic",    "image_pattern", "magnet",  "potential",       "spherical_warp"};
+  for (const char* p : patterns)
+    if (w == p) return true;
+  return false;
+}
+
+}  // namespace
+
+/// What a pigment block has said so far. With no pattern it is just `plain` (a colour or a declared
+/// pigment); with one it is a texture::PatternSpec in the making.
+struct Parser::PigmentBuilder {
+  PigmentPtr plain;
+  bool patterned = false;
+  texture::PatternSpec spec;  // warps without the classic turbulence, which is kept apart:
+  std::optional<texture::TurbulenceParams> turbulence;
+  std::vector<texture::PigmentMap::Entry> pigment_entries;
+  std::string special;  // marble, wood, agate: patterns that use the turbulence themselves
+  double agate_turb = 1.0;
+  bool brick = false;
+  math::Vec3 brick_size{8, 3, 4.5};
+  double mortar = 0.5;
+
+  /// Starts from an existing pigment: a patterned one can be modified further.
+  void start_from(const PigmentPtr& pigment) {
+    *this = PigmentBuilder{};
+    const auto* pattern = dynamic_cast<const texture::PatternPigment*>(pigment.get());
+    if (!pattern) {
+      plain = pigment;
+      return;
+    }
+    patterned = true;
+    spec = pattern->spec();
+    texture::WarpList rest;
+    for (const auto& w : spec.warps.warps()) {
+      const auto* t = dynamic_cast<const texture::TurbulenceWarp*>(w.get());
+      if (t && !turbulence && rest.empty())
+        turbulence = t->params();
+      else
+        rest.push(w);
+    }
+    spec.warps = rest;
+    if (spec.pigment_map) pigment_entries = spec.pigment_map->entries();
+    spec.pigment_map.reset();
+    brick = dynamic_cast<const texture::BrickPattern*>(spec.block_pattern.get()) != nullptr;
+  }
+
+  /// A pattern keyword replaces whatever colour or pattern came before it in the block.
+  void start_pattern() {
+    *this = PigmentBuilder{};
+    patterned = true;
+  }
+
+  texture::TurbulenceParams& turbulence_params() {
+    if (!turbulence) turbulence = texture::TurbulenceParams{};
+    return *turbulence;
+  }
+
+  void transform(const math::Transform& t) {
+    if (!patterned) {
+      plain = texture::transform_pigment(plain, t);
+      return;
+    }
+    spec.warps.push(std::make_shared<texture::TransformWarp>(t));
+    // Sub-pigments already given move with the pattern (POV-Ray transforms the map's pigments too).
+    for (auto& e : spec.block_entries) e = texture::transform_pigment(e, t);
+    for (auto& e : pigment_entries) e.second = texture::transform_pigment(e.second, t);
+  }
+
+  PigmentPtr build() const {
+    if (!patterned) return plain;
+    texture::PatternSpec out = spec;
+    if (brick) out.block_pattern = std::make_shared<texture::BrickPattern>(brick_size, mortar);
+    if (special == "marble") out.value_pattern = std::make_shared<texture::MarblePattern>(turbulence);
+    if (special == "wood") out.value_pattern = std::make_shared<texture::WoodPattern>(turbulence);
+    if (special == "agate")
+      out.value_pattern = std::make_shared<texture::AgatePattern>(
+          turbulence.value_or(texture::TurbulenceParams{}), agate_turb);
+    if (turbulence && special.empty()) {
+      texture::WarpList warps;
+      warps.push(std::make_shared<texture::TurbulenceWarp>(*turbulence));
+      for (const auto& w : spec.warps.warps()) warps.push(w);
+      out.warps = warps;
+    }
+    if (!pigment_entries.empty()) out.pigment_map.emplace(pigment_entries);
+    return std::make_shared<texture::PatternPigment>(std::move(out));
+  }
+};
+
+std::shared_ptr<const material::Pigment> Parser::parse_pigment_block(
+    const std::shared_ptr<const material::Pigment>& base) {
+  expect("{", "pigment");
+  PigmentBuilder builder;
+  builder.start_from(base);
+  parse_pigment_body(builder, "}");
+  const PigmentPtr pigment = builder.build();
+  return pigment ? pigment : solid(material::Rgbft{});
+}
+
+void Parser::parse_pigment_body(PigmentBuilder& b, const char* closer) {
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol(closer)) {
+      raw_next();
+      return;
+    }
+    if (t.kind == Token::Kind::identifier) {
+      if (const Value* v = lookup(t.text)) {
+        if (const auto* p = std::get_if<std::shared_ptr<const material::Pigment>>(&v->data)) {
+          const PigmentPtr copy = *p;
+          raw_next();
+          b.start_from(copy);
+          continue;
+        }
+      }
+      if (parse_pattern_type(b)) continue;
+      if (is_unsupported_pattern(t.text)) fail(t.where, "pattern '" + t.text + "' is not supported yet");
+      if (parse_pattern_modifier(b)) continue;
+      if (t.text == "pigment" && std::string(closer) == "]") {
+        // `[v pigment { ... }]` in a pigment_map: accepted like the bare body.
+        raw_next();
+        b.start_from(parse_pigment_block(nullptr));
+        continue;
+      }
+    }
+    if (starts_numeric()) {
+      b.start_from(solid(parse_color()));
+      continue;
+    }
+    fail(t.where, "unexpected '" + t.text + "' in pigment");
+  }
+}
+
+bool Parser::parse_pattern_type(PigmentBuilder& b) {
+  const Token t = peek();
+  const std::string& w = t.text;
+  std::shared_ptr<const texture::ValuePattern> value;
+  if (w == "gradient") {
+    raw_next();
+    const math::Vec3 direction = parse_vector();
+    value = std::make_shared<texture::GradientPattern>(direction);
+  } else if (w == "onion") {
+    value = std::make_shared<texture::OnionPattern>();
+  } else if (w == "spherical") {
+    value = std::make_shared<texture::SphericalPattern>();
+  } else if (w == "cylindrical") {
+    value = std::make_shared<texture::CylindricalPattern>();
+  } else if (w == "planar") {
+    value = std::make_shared<texture::PlanarPattern>();
+  } else if (w == "boxed") {
+    value = std::make_shared<texture::BoxedPattern>();
+  } else if (w == "radial") {
+    value = std::make_shared<texture::RadialPattern>();
+  } else if (w == "leopard") {
+    value = std::make_shared<texture::LeopardPattern>();
+  } else if (w == "bozo" || w == "spotted") {
+    value = std::make_shared<texture::BozoPattern>();
+  } else if (w == "granite") {
+    value = std::make_shared<texture::GranitePattern>();
+  } else if (w == "marble" || w == "wood" || w == "agate") {
+    value = std::make_shared<texture::GranitePattern>();  // replaced in build(), with the turbulence
+  }
+  if (value) {
+    if (w != "gradient") raw_next();
+    b.start_pattern();
+    b.spec.value_pattern = std::move(value);
+    // POV-Ray's per-pattern defaults (pattern.cpp default maps and waves).
+    using E = texture::ColorMap::Entry;
+    if (w == "marble" || w == "wood" || w == "agate") b.special = w;
+    if (w == "marble" || w == "wood") b.spec.wave.wave = texture::Wave::triangle;
+    if (w == "marble")
+      b.spec.color_map =
+          texture::ColorMap({E{0.0, rgb(0.9, 0.8, 0.8)}, E{0.9, rgb(0.9, 0.08, 0.08)}, E{0.9, rgb(0, 0, 0)}});
+    if (w == "wood")
+      b.spec.color_map = texture::ColorMap({E{0.6, rgb(0.666, 0.312, 0.2)}, E{0.6, rgb(0.4, 0.1333, 0.066)}});
+    if (w == "agate")
+      b.spec.color_map = texture::ColorMap({E{0.0, rgb(1, 1, 1)}, E{0.5, rgb(0.95, 0.75, 0.5)},
+                                            E{0.5, rgb(0.9, 0.7, 0.5)}, E{0.6, rgb(0.9, 0.7, 0.4)},
+                                            E{0.6, rgb(1.0, 0.7, 0.4)}, E{1.0, rgb(0.6, 0.3, 0.0)}});
+    if (w == "bozo" || w == "spotted")
+      b.spec.color_map =
+          texture::ColorMap({E{0.4, rgb(1, 1, 1)}, E{0.4, rgb(0, 1, 0)}, E{0.6, rgb(0, 1, 0)},
+                             E{0.6, rgb(0, 0, 1)}, E{0.8, rgb(0, 0, 1)}, E{0.8, rgb(1, 0, 0)}});
+    if (w == "radial")
+      b.spec.color_map = texture::ColorMap(
+          {E{0.0, rgb(0, 1, 1)}, E{0.333, rgb(1, 1, 0)}, E{0.666, rgb(1, 0, 1)}, E{1.0, rgb(0, 1, 1)}});
+    return true;
+  }
+
+  // Block patterns: up to block_count entries (colours or pigment bodies) follow, commas optional;
+  // entries left out take POV-Ray's defaults (pattern.cpp default maps).
+  std::vector<material::Rgbft> defaults;
+  std::shared_ptr<const texture::BlockPattern> block;
+  if (w == "checker") {
+    block = std::make_shared<texture::CheckerPattern>();
+    defaults = {rgb(0, 0, 1), rgb(0, 1, 0)};
+  } else if (w == "hexagon") {
+    block = std::make_shared<texture::HexagonPattern>();
+    defaults = {rgb(0, 0, 1), rgb(0, 1, 0), rgb(1, 0, 0)};
+  } else if (w == "brick") {
+    block = std::make_shared<texture::BrickPattern>();
+    defaults = {rgb(0.5, 0.5, 0.5), rgb(0.6, 0.15, 0.15)};
+  } else {
+    return false;
+  }
+  raw_next();
+  b.start_pattern();
+  b.brick = w == "brick";
+  b.spec.block_pattern = block;
+  for (size_t i = 0; i < defaults.size(); ++i) {
+    if (i > 0 && peek().is_symbol(",")) raw_next();
+    const Token& e = peek();
+    if (e.is_word("pigment")) {
+      raw_next();
+      b.spec.block_entries.push_back(parse_pigment_block(nullptr));
+      continue;
+    }
+    if (e.kind == Token::Kind::identifier) {
+      if (const Value* v = lookup(e.text)) {
+        if (const auto* p = std::get_if<std::shared_ptr<const material::Pigment>>(&v->data)) {
+          const PigmentPtr copy = *p;
+          raw_next();
+          b.spec.block_entries.push_back(copy);
+          continue;
+        }
+      }
+    }
+    if (!starts_numeric()) break;
+    b.spec.block_entries.push_back(solid(parse_color()));
+  }
+  for (size_t i = b.spec.block_entries.size(); i < defaults.size(); ++i)
+    b.spec.block_entries.push_back(solid(defaults[i]));
+  return true;
+}
+
+bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
+  const Token t = peek();
+  if (t.kind != Token::Kind::identifier) return false;
+  if (auto step = parse_transform_item()) {
+    b.transform(*step);
+    return true;
+  }
+  const std::string& w = t.text;
+  auto need_value_pattern = [&] {
+    if (!b.patterned || !b.spec.value_pattern)
+      fail(t.where, "'" + w + "' needs a value pattern (gradient, onion, spherical, ...) before it");
+  };
+  auto set_wave = [&](texture::Wave wave) {
+    raw_next();
+    b.spec.wave.wave = wave;
+  };
+  if (w == "color_map" || w == "colour_map") {
+    raw_next();
+    need_value_pattern();
+    b.spec.color_map = *parse_color_map();
+    b.pigment_entries.clear();
+  } else if (w == "pigment_map") {
+    raw_next();
+    need_value_pattern();
+    b.pigment_entries = parse_pigment_map()->entries();
+    b.spec.color_map.reset();
+  } else if (w == "ramp_wave") {
+    set_wave(texture::Wave::ramp);
+  } else if (w == "triangle_wave") {
+    set_wave(texture::Wave::triangle);
+  } else if (w == "sine_wave") {
+    set_wave(texture::Wave::sine);
+  } else if (w == "scallop_wave") {
+    set_wave(texture::Wave::scallop);
+  } else if (w == "cubic_wave") {
+    set_wave(texture::Wave::cubic);
+  } else if (w == "poly_wave") {
+    set_wave(texture::Wave::poly);
+    if (starts_numeric()) b.spec.wave.exponent = parse_float();
+  } else if (w == "frequency") {
+    raw_next();
+    b.spec.wave.frequency = parse_float();
+  } else if (w == "phase") {
+    raw_next();
+    b.spec.wave.phase = parse_float();
+  } else if (w == "turbulence") {
+    raw_next();
+    const Numeric n = parse_numeric();
+    b.turbulence_params().amount = n.size == 1 ? math::Vec3{n.x(), n.x(), n.x()} : n.vec3();
+  } else if (w == "octaves") {
+    raw_next();
+    const double octaves = parse_float();
+    // POV-Ray clips octaves to 1..10.
+    b.turbulence_params().octaves = static_cast<int>(std::clamp(octaves, 1.0, 10.0));
+  } else if (w == "omega") {
+    raw_next();
+    b.turbulence_params().omega = parse_float();
+  } else if (w == "lambda") {
+    raw_next();
+    b.turbulence_params().lambda = parse_float();
+  } else if (w == "brick_size") {
+    raw_next();
+    const Numeric n = parse_numeric();
+    const math::Vec3 size = n.size == 1 ? math::Vec3{n.x(), n.x(), n.x()} : n.vec3();
+    if (!b.brick) fail(t.where, "brick_size is only for the brick pattern");
+    if (!(size.x > 0 && size.y > 0 && size.z > 0)) fail(t.where, "brick_size must be positive");
+    b.brick_size = size;
+  } else if (w == "mortar") {
+    raw_next();
+    const double mortar = parse_float();
+    if (!b.brick) fail(t.where, "mortar is only for the brick pattern");
+    if (mortar < 0) fail(t.where, "mortar must not be negative");
+    b.mortar = mortar;
+  } else if (w == "warp") {
+    // `warp { turbulence ... }`: turbulence at this place in the warp list (POV-Ray reference, "Warps").
+    raw_next();
+    expect("{", "warp");
+    const Token kind = peek();
+    if (!kind.is_word("turbulence"))
+      fail(kind.where, "warp '" + kind.text + "' is not supported yet (only turbulence)");
+    raw_next();
+    texture::TurbulenceParams params;
+    const Numeric n = parse_numeric();
+    params.amount = n.size == 1 ? math::Vec3{n.x(), n.x(), n.x()} : n.vec3();
+    for (;;) {
+      const Token m = peek();
+      if (m.is_symbol("}")) {
+        raw_next();
+        break;
+      }
+      raw_next();
+      if (m.is_word("octaves"))
+        params.octaves = static_cast<int>(std::clamp(parse_float(), 1.0, 10.0));
+      else if (m.is_word("omega"))
+        params.omega = parse_float();
+      else if (m.is_word("lambda"))
+        params.lambda = parse_float();
+      else
+        fail(m.where, "unexpected '" + m.text + "' in warp");
+    }
+    if (!b.patterned) return true;  // a plain colour is the same everywhere
+    b.spec.warps.push(std::make_shared<texture::TurbulenceWarp>(params));
+  } else if (w == "agate_turb") {
+    raw_next();
+    b.agate_turb = parse_float();
+  } else if (w == "quick_color" || w == "quick_colour") {
+    raw_next();
+    parse_color();
+  } else if (w == "noise_generator") {
+    raw_next();
+    parse_float();  // one noise for now (see texture/warp.hpp)
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::shared_ptr<const texture::ColorMap> Parser::parse_color_map() {
+  // `color_map Ident` (old form) or `color_map { [Ident] entries }`.
+  if (peek().kind == Token::Kind::identifier) {
+    if (const Value* v = lookup(peek().text)) {
+      if (const auto* m = std::get_if<std::shared_ptr<const texture::ColorMap>>(&v->data)) {
+        const auto copy = *m;
+        raw_next();
+        return copy;
+      }
+    }
+  }
+  const scene::SourceLocation where = peek().where;
+  expect("{", "color_map");
+  std::vector<texture::ColorMap::Entry> entries;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      break;
+    }
+    if (t.kind == Token::Kind::identifier) {
+      if (const Value* v = lookup(t.text)) {
+        if (const auto* m = std::get_if<std::shared_ptr<const texture::ColorMap>>(&v->data)) {
+          entries = (*m)->entries();
+          raw_next();
+          continue;
+        }
+      }
+    }
+    if (!t.is_symbol("[")) fail(t.where, "expected '[' or '}' in color_map, found '" + t.text + "'");
+    raw_next();
+    const double v1 = parse_float();
+    accept(",");
+    if (peek().is_symbol("]")) fail(peek().where, "color_map entry needs a colour after its value");
+    const Numeric second = parse_numeric();
+    if (second.size == 1 && !second.color && !peek().is_symbol("]")) {
+      // The old form `[v1, v2 color c1 color c2]`: a band from c1 at v1 to c2 at v2.
+      accept(",");
+      const material::Rgbft c1 = parse_color();
+      accept(",");
+      const material::Rgbft c2 = parse_color();
+      entries.emplace_back(v1, c1);
+      entries.emplace_back(second.x(), c2);
+    } else {
+      // Promoted as parse_color does: a float fills every component, a short vector is padded with 0.
+      Numeric c = second;
+      if (c.size == 1) c.v.fill(c.v[0]);
+      for (int i = c.size == 1 ? 5 : c.size; i < 5; ++i) c.v[static_cast<size_t>(i)] = 0;
+      entries.emplace_back(v1, material::Rgbft{{c.v[0], c.v[1], c.v[2]}, c.v[3], c.v[4]});
+    }
+    expect("]", "color_map entry");
+  }
+  if (entries.empty()) fail(where, "color_map has no entries");
+  return std::make_shared<texture::ColorMap>(std::move(entries));
+}
+
+std::shared_ptr<const texture::PigmentMap> Parser::parse_pigment_map() {
+  if (peek().kind == Token::Kind::identifier) {
+    if (const Value* v = lookup(peek().text)) {
+      if (const auto* m = std::get_if<std::shared_ptr<const texture::PigmentMap>>(&v->data)) {
+        const auto copy = *m;
+        raw_next();
+        return copy;
+      }
+    }
+  }
+  const scene::SourceLocation where = peek().where;
+  expect("{", "pigment_map");
+  std::vector<texture::PigmentMap::Entry> entries;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      break;
+    }
+    if (t.kind == Token::Kind::identifier) {
+      if (const Value* v = lookup(t.text)) {
+        if (const auto* m = std::get_if<std::shared_ptr<const texture::PigmentMap>>(&v->data)) {
+          entries = (*m)->entries();
+          raw_next();
+          continue;
+        }
+      }
+    }
+    if (!t.is_symbol("[")) fail(t.where, "expected '[' or '}' in pigment_map, found '" + t.text + "'");
+    raw_next();
+    const double value = parse_float();
+    accept(",");
+    PigmentBuilder entry;
+    parse_pigment_body(entry, "]");
+    PigmentPtr pigment = entry.build();
+    if (!pigment) pigment = solid(material::Rgbft{});
+    entries.emplace_back(value, std::move(pigment));
+  }
+  if (entries.empty()) fail(where, "pigment_map has no entries");
+  return std::make_shared<texture::PigmentMap>(std::move(entries));
+}
+
+}  // namespace snell::sdl

@@ -1,0 +1,49 @@
+#include "snell/texture/noise_patterns.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "snell/texture/perlin_noise.hpp"
+
+namespace snell::texture {
+
+namespace {
+constexpr double kTwoPi = 6.28318530717958647692;
+
+double cycloidal(double v) {
+  return std::sin(v * kTwoPi);
+}
+}  // namespace
+
+double MarblePattern::value(const Vec3& p) const {
+  if (!turbulence_) return p.x;
+  const TurbulenceParams& t = *turbulence_;
+  return p.x + t.amount.x * perlin_turbulence(p, t.octaves, t.lambda, t.omega);
+}
+
+double WoodPattern::value(const Vec3& p) const {
+  double x = p.x, y = p.y;
+  if (turbulence_) {
+    const TurbulenceParams& t = *turbulence_;
+    const Vec3 d = vector_turbulence(p, t.octaves, t.omega, t.lambda);
+    x += cycloidal((p.x + d.x) * t.amount.x);
+    y += cycloidal((p.y + d.y) * t.amount.y);
+  }
+  return std::sqrt(x * x + y * y);
+}
+
+double AgatePattern::value(const Vec3& p) const {
+  const TurbulenceParams& t = turbulence_;
+  const double turb = agate_turb_ * perlin_turbulence(p, t.octaves, t.lambda, t.omega);
+  const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
+  return std::pow(std::clamp(v, 0.0, 1.0), 0.77);
+}
+
+double GranitePattern::value(const Vec3& p) const {
+  double sum = 0, frequency = 1;
+  for (int i = 0; i < 6; ++i, frequency *= 2)
+    sum += 0.5 * std::fabs(improved_perlin_noise(p * (4.0 * frequency))) / frequency;
+  return sum;
+}
+
+}  // namespace snell::texture

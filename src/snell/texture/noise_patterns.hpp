@@ -1,0 +1,51 @@
+#pragma once
+// POV-Ray's noise-based value patterns that use their turbulence themselves instead of as a warp
+// (POV-Ray 3.7 reference, "marble", "wood", "agate", "granite"). The shapes follow POV-Ray's formulas;
+// the noise under them is improved Perlin noise, not POV-Ray's generator, so renders match in character
+// and scale but not point for point.
+#include <optional>
+
+#include "snell/texture/pattern.hpp"
+#include "snell/texture/warp.hpp"
+
+namespace snell::texture {
+
+/// `marble`: x plus turbulence, meant for the triangle wave (bands along x).
+class MarblePattern final : public ValuePattern {
+ public:
+  explicit MarblePattern(std::optional<TurbulenceParams> turbulence) : turbulence_(turbulence) {}
+  double value(const Vec3& p) const override;
+
+ private:
+  std::optional<TurbulenceParams> turbulence_;
+};
+
+/// `wood`: distance from the z axis (rings), the point wobbled by turbulence.
+class WoodPattern final : public ValuePattern {
+ public:
+  explicit WoodPattern(std::optional<TurbulenceParams> turbulence) : turbulence_(turbulence) {}
+  double value(const Vec3& p) const override;
+
+ private:
+  std::optional<TurbulenceParams> turbulence_;
+};
+
+/// `agate`: bands along z bent by turbulence, (0.5 (1 + sin(2 pi (1.3 t + 1.1 z))))^0.77.
+class AgatePattern final : public ValuePattern {
+ public:
+  AgatePattern(TurbulenceParams turbulence, double agate_turb)
+      : turbulence_(turbulence), agate_turb_(agate_turb) {}
+  double value(const Vec3& p) const override;
+
+ private:
+  TurbulenceParams turbulence_;
+  double agate_turb_;
+};
+
+/// `granite`: six octaves of |noise| at 4x scale, each halving in amplitude (1/f noise).
+class GranitePattern final : public ValuePattern {
+ public:
+  double value(const Vec3& p) const override;
+};
+
+}  // namespace snell::texture
