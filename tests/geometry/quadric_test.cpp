@@ -91,6 +91,16 @@ TEST(QuadricTest, HyperboloidCrossesTwiceThroughTheWaist) {
   EXPECT_NEAR(all[1].t, 6, 1e-12);
 }
 
+TEST(QuadricTest, ConeApexGetsAUsableNormal) {
+  // x^2 + z^2 - y^2 = 0 is a double cone whose gradient vanishes at the apex, the origin.
+  const Quadric q({1, -1, 1}, {0, 0, 0}, {0, 0, 0}, 0);
+  LocalHit hit;
+  ASSERT_TRUE(q.intersect(Ray{{-1, 0, 0}, {1, 0, 0}, 0}, 1e-9, math::kInfinity, hit));
+  EXPECT_NEAR(hit.t, 1, 1e-9);
+  EXPECT_GT(length(hit.normal), 0);
+  EXPECT_TRUE(is_finite(hit.normal));
+}
+
 TEST(QuadricTest, DegenerateInputIsRejected) {
   EXPECT_THROW(Quadric({0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 1), std::invalid_argument);
   EXPECT_THROW(Quadric({NAN, 0, 0}, {0, 0, 0}, {0, 0, 0}, 1), std::invalid_argument);

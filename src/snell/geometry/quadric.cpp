@@ -62,6 +62,15 @@ Bounds3 Quadric::compute_bounds() const {
   return {center - half - pad, center + half + pad};
 }
 
+namespace {
+
+/// The gradient vanishes only at singular points (a cone's apex); face the ray there.
+Vec3 usable_normal(const Vec3& gradient, const Ray& ray) {
+  return length_squared(gradient) > 0 ? gradient : -ray.direction;
+}
+
+}  // namespace
+
 int Quadric::roots(const Ray& ray, double t[2]) const {
   const Vec3& o = ray.origin;
   const Vec3& d = ray.direction;
@@ -93,7 +102,7 @@ bool Quadric::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hi
     if (t[i] > t_min && t[i] < t_max) {
       hit = LocalHit{};
       hit.t = t[i];
-      hit.normal = gradient(ray.at(t[i]));
+      hit.normal = usable_normal(gradient(ray.at(t[i])), ray);
       return true;
     }
   }
@@ -107,7 +116,7 @@ void Quadric::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits
     if (!(t[i] > t_min && t[i] < t_max)) continue;
     LocalHit hit;
     hit.t = t[i];
-    hit.normal = gradient(ray.at(t[i]));
+    hit.normal = usable_normal(gradient(ray.at(t[i])), ray);
     hits.push_back(hit);
   }
 }
