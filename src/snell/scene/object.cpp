@@ -1,6 +1,17 @@
 #include "snell/scene/object.hpp"
 
+#include "snell/scene/csg.hpp"
+
 namespace snell::scene {
+
+namespace {
+
+void flip(SurfaceHit& hit) {
+  hit.normal = -hit.normal;
+  hit.shading_normal = -hit.shading_normal;
+}
+
+}  // namespace
 
 SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& local) const {
   SurfaceHit hit;
@@ -19,16 +30,43 @@ SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& loca
 }
 
 bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
+  if (csg) {
+    if (!csg->intersect(ray, t_min, t_max, hit)) return false;
+    if (flags.inverse) flip(hit);  // the leaf's own inverse is already in its normal
+    return true;
+  }
   geometry::LocalHit local;
   if (!shape->intersect(transform.inverse_ray(ray), t_min, t_max, local)) return false;
   hit = to_world(ray, local);
   return true;
 }
 
-math::Bounds3 Object::world_bounds() const { return transform.bounds(shape->bounds()); }
+void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
+  if (csg) {
+    const size_t first = hits.size();
+    csg->all_hits(ray, t_min, t_max, hits);
+    if (flags.inverse)
+      for (size_t i = first; i < hits.size(); ++i) flip(hits[i]);
+    return;
+  }
+  geometry::HitList local;
+  shape->all_hits(transform.inverse_ray(ray), t_min, t_max, local);
+  for (const geometry::LocalHit& l : local) hits.push_back(to_world(ray, l));
+}
+
+math::Bounds3 Object::world_bounds() const {
+  if (csg) return csg->bounds();
+  return transform.bounds(shape->bounds());
+}
+
+math::Bounds3 Object::solid_bounds() const {
+  if (flags.inverse) return math::Bounds3::infinite();  // everything outside a surface
+  return csg ? csg->solid_bounds() : world_bounds();
+}
 
 bool Object::inside(const Vec3& world_point) const {
-  return shape->inside(transform.inverse_point(world_point)) != flags.inverse;
+  const bool in = csg ? csg->inside(world_point) : shape->inside(transform.inverse_point(world_point));
+  return in != flags.inverse;
 }
 
 }  // namespace snell::scene

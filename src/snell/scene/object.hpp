@@ -3,6 +3,7 @@
 // that places it, its texture and interior, and POV-Ray's object flags.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "snell/geometry/shape.hpp"
 #include "snell/material/interior.hpp"
@@ -28,6 +29,7 @@ struct ObjectFlags {
 };
 
 struct Object;
+class Csg;
 
 /// A ray-surface hit in world space, ready for shading.
 struct SurfaceHit {
@@ -43,7 +45,11 @@ struct SurfaceHit {
 };
 
 struct Object {
+  /// Null for a CSG object (then `csg` is set).
   std::shared_ptr<const geometry::Shape> shape;
+  /// Set for intersection, difference, merge, clipped objects and unions inside CSG (scene/csg.hpp). Its
+  /// children are already in world space, so `transform` stays the identity; hits name the child hit.
+  std::shared_ptr<const Csg> csg;
   /// Object space -> world space.
   math::Transform transform;
   /// Never null once the scene is built (the default texture stands in).
@@ -57,15 +63,23 @@ struct Object {
 
   /// Nearest hit with t in (t_min, t_max) of a world ray.
   bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
+  /// Every hit with t in (t_min, t_max), appended in increasing t (for CSG).
+  void all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const;
   /// World-space bounds (infinite for unbounded shapes, or when a transform makes them so).
   math::Bounds3 world_bounds() const;
   bool inside(const Vec3& world_point) const;
+  /// Bounds of the points `inside` accepts (infinite for inverted objects), for CSG bounds.
+  math::Bounds3 solid_bounds() const;
   bool visible_to(RayKind kind) const {
     switch (kind) {
-      case RayKind::camera: return !flags.no_image;
-      case RayKind::reflection: return !flags.no_reflection;
-      case RayKind::refraction: return !flags.no_image;
-      case RayKind::shadow: return !flags.no_shadow;
+      case RayKind::camera:
+        return !flags.no_image;
+      case RayKind::reflection:
+        return !flags.no_reflection;
+      case RayKind::refraction:
+        return !flags.no_image;
+      case RayKind::shadow:
+        return !flags.no_shadow;
     }
     return true;
   }

@@ -1,5 +1,6 @@
-// Objects: shapes, union, blob, mesh, light_source and `object { Ident }`, with their modifiers
-// (POV-Ray 3.7 reference, "Objects", "Object Modifiers", "Light Sources").
+// Objects: shapes, union, CSG (intersection, difference, merge), clipped_by, blob, mesh, light_source and
+// `object { Ident }`, with their modifiers (POV-Ray 3.7 reference, "Objects", "Object Modifiers", "Light
+// Sources").
 #include <stdexcept>
 
 #include "snell/sdl/parser.hpp"
@@ -10,8 +11,8 @@ namespace snell::sdl {
 namespace {
 
 bool is_shape_keyword(const std::string& w) {
-  static const char* const shapes[] = {"sphere", "plane", "box",      "cylinder",       "cone",
-                                       "disc",   "torus", "triangle", "smooth_triangle"};
+  static const char* const shapes[] = {"sphere", "plane", "box",      "cylinder",        "cone",
+                                       "disc",   "torus", "triangle", "smooth_triangle", "quadric"};
   for (const char* s : shapes)
     if (w == s) return true;
   return false;
@@ -23,15 +24,23 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   const Token t = peek();
   if (t.kind != Token::Kind::identifier) return std::nullopt;
   const std::string& w = t.text;
-  if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "blob" || w == "mesh" ||
-      w == "light_source" || w == "object") {
+  if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
+      w == "blob" || w == "mesh" || w == "light_source" || w == "object") {
     raw_next();
     return parse_object(t);
   }
-  if (w == "intersection" || w == "difference" || w == "mesh2" || w == "lathe" || w == "sor" ||
-      w == "prism" || w == "superellipsoid" || w == "height_field" || w == "isosurface" || w == "text" ||
-      w == "polygon" || w == "julia_fractal" || w == "parametric" || w == "sphere_sweep" || w == "quadric" ||
-      w == "poly" || w == "cubic" || w == "quartic" || w == "bicubic_patch" || w == "lemon" || w == "ovus")
+  // A bare declared object, as POV-Ray accepts it where an object may stand.
+  if (const Value* v = lookup(w)) {
+    if (const auto* declared = std::get_if<ParsedObject>(&v->data)) {
+      ParsedObject o = *declared;
+      raw_next();
+      return o;
+    }
+  }
+  if (w == "mesh2" || w == "lathe" || w == "sor" || w == "prism" || w == "superellipsoid" ||
+      w == "height_field" || w == "isosurface" || w == "text" || w == "polygon" || w == "julia_fractal" ||
+      w == "parametric" || w == "sphere_sweep" || w == "poly" || w == "cubic" || w == "quartic" ||
+      w == "bicubic_patch" || w == "lemon" || w == "ovus")
     fail(t.where, "the object '" + w + "' is not supported yet");
   return std::nullopt;
 }
@@ -39,9 +48,11 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
 ParsedObject Parser::parse_object(const Token& keyword) {
   const std::string& w = keyword.text;
   ParsedObject o;
-  if (w == "union" || w == "merge") {
-    if (w == "merge") warn(keyword.where, "merge is parsed as union for now (inner surfaces stay visible)");
+  if (w == "union" || w == "merge" || w == "intersection" || w == "difference") {
     o = parse_union(keyword);
+    if (w == "merge") o.combine = ParsedObject::Combine::merge;
+    if (w == "intersection") o.combine = ParsedObject::Combine::intersection;
+    if (w == "difference") o.combine = ParsedObject::Combine::difference;
   } else if (w == "blob") {
     o = parse_blob(keyword);
   } else if (w == "mesh") {
@@ -155,6 +166,14 @@ ParsedObject Parser::parse_shape(const Token& keyword) {
         if (i < 5) comma();
       }
       o.shape = shapes::smooth_triangle(p[0], p[1], p[2], p[3], p[4], p[5]);
+    } else if (w == "quadric") {
+      const math::Vec3 squares = parse_vector();
+      comma();
+      const math::Vec3 mixed = parse_vector();
+      comma();
+      const math::Vec3 linear = parse_vector();
+      comma();
+      o.shape = shapes::quadric(squares, mixed, linear, parse_float());
     }
   } catch (const ParseError&) {
     throw;
@@ -426,6 +445,38 @@ void Parser::parse_object_modifiers(ParsedObject& object) {
   }
 }
 
+void Parser::parse_clip_block(ParsedObject& o, const Token& keyword) {
+  // clipped_by { objects } or bounded_by { objects }; `clipped_by { bounded_by }` and
+  // `bounded_by { clipped_by }` reuse the other list (POV-Ray 3.7 reference, "Clipped_By", "Bounded_By").
+  // Bounds are only an optimisation hint in POV-Ray, so bounded_by objects are checked and dropped.
+  const bool clip = keyword.text == "clipped_by";
+  expect("{", keyword.text.c_str());
+  const Token first = peek();
+  if (clip && first.is_word("bounded_by")) {
+    raw_next();
+    expect("}", "clipped_by");
+    o.clipped_by = o.bounded_by;
+    return;
+  }
+  if (!clip && first.is_word("clipped_by")) {
+    raw_next();
+    expect("}", "bounded_by");
+    return;
+  }
+  std::vector<ParsedObject> objects;
+  // The clipping objects are written in the object's current space; keep them in its own space so that
+  // later transforms of the object move them too.
+  const math::Transform to_own = o.transform.inverse();
+  while (auto child = parse_object_if_any()) {
+    child->apply(to_own);
+    objects.push_back(std::move(*child));
+  }
+  expect("}", keyword.text.c_str());
+  if (objects.empty()) fail(keyword.where, keyword.text + " needs at least one object");
+  auto& list = clip ? o.clipped_by : o.bounded_by;
+  for (auto& obj : objects) list.push_back(std::move(obj));
+}
+
 void Parser::attach_pigment(ParsedObject& o, std::shared_ptr<const material::Pigment> pigment) {
   auto texture =
       o.texture ? std::make_shared<material::Texture>(*o.texture) : std::make_shared<material::Texture>();
@@ -482,9 +533,9 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
     o.flags.hollow = parse_bool_optional(true);
   } else if (w == "inverse") {
     o.flags.inverse = !o.flags.inverse;
-  } else if (w == "bounded_by") {
-    skip_block(w);  // only an optimisation hint
-  } else if (w == "clipped_by" || w == "photons" || w == "radiosity" || w == "interior_texture") {
+  } else if (w == "clipped_by" || w == "bounded_by") {
+    parse_clip_block(o, t);
+  } else if (w == "photons" || w == "radiosity" || w == "interior_texture") {
     warn(t.where, w + " is not supported yet; ignored");
     skip_block(w);
   } else if (w == "no_radiosity") {

@@ -1,5 +1,7 @@
 #include "snell/sdl/parsed_object.hpp"
 
+#include "snell/scene/csg.hpp"
+
 namespace snell::sdl {
 
 void ParsedObject::apply(const math::Transform& t) {
@@ -13,6 +15,10 @@ void ParsedObject::apply(const math::Transform& t) {
 
 namespace {
 
+using ObjectPtr = std::shared_ptr<const scene::Object>;
+using TexturePtr = std::shared_ptr<const material::Texture>;
+using InteriorPtr = std::shared_ptr<const material::Interior>;
+
 scene::ObjectFlags merge(const scene::ObjectFlags& own, const scene::ObjectFlags& inherited) {
   scene::ObjectFlags f = own;
   f.no_shadow = own.no_shadow || inherited.no_shadow;
@@ -24,55 +30,122 @@ scene::ObjectFlags merge(const scene::ObjectFlags& own, const scene::ObjectFlags
   return f;
 }
 
-void flatten_into(const ParsedObject& o, const math::Transform& parent,
-                  const std::shared_ptr<const material::Texture>& inherited_texture,
-                  const std::shared_ptr<const material::Interior>& inherited_interior,
-                  const scene::ObjectFlags& inherited_flags, const std::string& inherited_name,
-                  std::vector<std::shared_ptr<const scene::Object>>& objects,
-                  std::vector<scene::Light>& lights) {
-  const math::Transform to_world = parent * o.transform;
-  std::shared_ptr<const material::Texture> texture = inherited_texture;
+/// What a parent hands down to its children: placement and the texture, interior, flags and name they
+/// fall back on.
+struct Inherited {
+  math::Transform to_world;
+  TexturePtr texture;
+  InteriorPtr interior;
+  scene::ObjectFlags flags;
+  std::string name;
+};
+
+/// The object's own values resolved against its parent's.
+Inherited resolve(const ParsedObject& o, const Inherited& parent) {
+  Inherited r;
+  r.to_world = parent.to_world * o.transform;
+  r.texture = parent.texture;
   if (o.texture) {
-    if (parent.is_identity()) {
-      texture = o.texture;
+    if (parent.to_world.is_identity()) {
+      r.texture = o.texture;
     } else {
       auto placed = std::make_shared<material::Texture>(*o.texture);
-      placed->transform = parent * placed->transform;
-      texture = std::move(placed);
+      placed->transform = parent.to_world * placed->transform;
+      r.texture = std::move(placed);
     }
   }
-  const auto interior = o.interior ? o.interior : inherited_interior;
-  const scene::ObjectFlags flags = merge(o.flags, inherited_flags);
-  const std::string& name = o.name.empty() ? inherited_name : o.name;
+  r.interior = o.interior ? o.interior : parent.interior;
+  r.flags = merge(o.flags, parent.flags);
+  r.name = o.name.empty() ? parent.name : o.name;
+  return r;
+}
 
-  if (o.light) {
-    scene::Light light = *o.light;
-    light.position = to_world.point(light.position);
-    light.point_at = to_world.point(light.point_at);
-    light.axis1 = to_world.vector(light.axis1);
-    light.axis2 = to_world.vector(light.axis2);
-    lights.push_back(light);
-  }
+void add_light(const ParsedObject& o, const math::Transform& to_world, std::vector<scene::Light>& lights) {
+  scene::Light light = *o.light;
+  light.position = to_world.point(light.position);
+  light.point_at = to_world.point(light.point_at);
+  light.axis1 = to_world.vector(light.axis1);
+  light.axis2 = to_world.vector(light.axis2);
+  lights.push_back(light);
+}
+
+std::shared_ptr<scene::Object> make_object(const ParsedObject& o, const Inherited& own) {
+  auto object = std::make_shared<scene::Object>();
+  object->transform = own.to_world;
+  object->texture = own.texture ? own.texture : material::Texture::default_texture();
+  object->interior = own.interior;
+  object->flags = own.flags;
+  object->name = own.name;
+  object->where = o.where;
+  return object;
+}
+
+/// One scene object for `o` and everything under it (a CSG object for unions and CSG), or null when
+/// it holds only lights.
+ObjectPtr build(const ParsedObject& o, const Inherited& parent, std::vector<scene::Light>& lights) {
+  const Inherited own = resolve(o, parent);
+  if (o.light) add_light(o, own.to_world, lights);
+
+  std::shared_ptr<scene::Object> object;
   if (o.shape) {
-    auto object = std::make_shared<scene::Object>();
+    object = make_object(o, own);
     object->shape = o.shape;
-    object->transform = to_world;
-    object->texture = texture ? texture : material::Texture::default_texture();
-    object->interior = interior;
-    object->flags = flags;
-    object->name = name;
-    object->where = o.where;
-    objects.push_back(std::move(object));
+  } else if (!o.children.empty()) {
+    std::vector<ObjectPtr> children;
+    for (const auto& child : o.children) {
+      ObjectPtr built = build(child, own, lights);
+      if (!built) continue;
+      // POV-Ray's difference is the intersection of the first child with the complements of the others.
+      if (o.combine == ParsedObject::Combine::difference && !children.empty()) {
+        auto inverted = std::make_shared<scene::Object>(*built);
+        inverted->flags.inverse = !inverted->flags.inverse;
+        built = std::move(inverted);
+      }
+      children.push_back(std::move(built));
+    }
+    if (children.empty()) return nullptr;
+    scene::CsgKind kind = scene::CsgKind::union_of;
+    if (o.combine == ParsedObject::Combine::merge) kind = scene::CsgKind::merge;
+    if (o.combine == ParsedObject::Combine::intersection || o.combine == ParsedObject::Combine::difference)
+      kind = scene::CsgKind::intersection;
+    object = make_object(o, own);
+    object->transform = math::Transform{};  // the children carry the placement
+    object->csg = std::make_shared<scene::Csg>(kind, std::move(children));
   }
-  for (const auto& child : o.children)
-    flatten_into(child, to_world, texture, interior, flags, name, objects, lights);
+  if (!object) return nullptr;
+  if (o.clipped_by.empty()) return object;
+
+  // clipped_by: the object's surface where it lies inside every clipping object (POV-Ray reference,
+  // "Clipped_By"); the clipping objects are in the object's space and show no surface of their own.
+  std::vector<ObjectPtr> parts{object};
+  Inherited clip_parent = own;
+  clip_parent.flags = {};
+  for (const auto& clip : o.clipped_by)
+    if (ObjectPtr built = build(clip, clip_parent, lights)) parts.push_back(std::move(built));
+  auto clipped = make_object(o, own);
+  clipped->transform = math::Transform{};
+  clipped->flags.inverse = false;  // the inverse stays with the clipped object itself
+  clipped->csg = std::make_shared<scene::Csg>(scene::CsgKind::intersection, std::move(parts), 1);
+  return clipped;
+}
+
+void flatten_into(const ParsedObject& o, const Inherited& parent, std::vector<ObjectPtr>& objects,
+                  std::vector<scene::Light>& lights) {
+  const bool plain_union = !o.shape && o.combine == ParsedObject::Combine::union_of && !o.flags.inverse;
+  if (!plain_union || !o.clipped_by.empty()) {
+    if (ObjectPtr object = build(o, parent, lights)) objects.push_back(std::move(object));
+    return;
+  }
+  const Inherited own = resolve(o, parent);
+  if (o.light) add_light(o, own.to_world, lights);
+  for (const auto& child : o.children) flatten_into(child, own, objects, lights);
 }
 
 }  // namespace
 
 void flatten(const ParsedObject& object, std::vector<std::shared_ptr<const scene::Object>>& objects,
              std::vector<scene::Light>& lights) {
-  flatten_into(object, math::Transform{}, nullptr, nullptr, scene::ObjectFlags{}, "", objects, lights);
+  flatten_into(object, Inherited{}, objects, lights);
 }
 
 }  // namespace snell::sdl

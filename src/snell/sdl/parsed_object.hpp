@@ -12,10 +12,19 @@
 namespace snell::sdl {
 
 struct ParsedObject {
-  /// Null for a union (children hold the parts) or a light.
+  /// How the children combine: a plain union is flattened into the scene (fast); the others become one
+  /// scene::Object with a scene::Csg, and so does a union nested inside one of them.
+  enum class Combine { union_of, merge, intersection, difference };
+
+  /// Null for a union or CSG (children hold the parts) or a light.
   std::shared_ptr<const geometry::Shape> shape;
   std::optional<scene::Light> light;
   std::vector<ParsedObject> children;
+  Combine combine = Combine::union_of;
+  /// `clipped_by` objects, in this object's own space (before `transform`).
+  std::vector<ParsedObject> clipped_by;
+  /// `bounded_by` objects, in its own space: kept only for `clipped_by { bounded_by }`.
+  std::vector<ParsedObject> bounded_by;
   /// Object space -> parent space.
   math::Transform transform;
   /// Its transform maps texture space to parent space (the object's later transforms are folded in).

@@ -143,6 +143,8 @@ class Parser {
   ParsedObject parse_light(const Token& keyword);
   void parse_object_modifiers(ParsedObject& object);
   bool parse_object_modifier(ParsedObject& object);
+  /// clipped_by { ... } / bounded_by { ... } after its keyword.
+  void parse_clip_block(ParsedObject& object, const Token& keyword);
   void attach_pigment(ParsedObject& object, std::shared_ptr<const material::Pigment> pigment);
 
   // ---- scene items (scene_items.cpp) ----

@@ -5,6 +5,7 @@
 #include "snell/geometry/cylinder.hpp"
 #include "snell/geometry/disc.hpp"
 #include "snell/geometry/plane.hpp"
+#include "snell/geometry/quadric.hpp"
 #include "snell/geometry/sphere.hpp"
 #include "snell/geometry/torus.hpp"
 #include "snell/geometry/triangle.hpp"
@@ -53,6 +54,10 @@ ShapePtr mesh(geometry::MeshData data) {
 
 ShapePtr blob(double threshold, std::vector<geometry::BlobComponent> components) {
   return std::make_shared<geometry::Blob>(threshold, std::move(components));
+}
+
+ShapePtr quadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear, double constant) {
+  return std::make_shared<geometry::Quadric>(squares, mixed, linear, constant);
 }
 
 }  // namespace snell::sdl::shapes

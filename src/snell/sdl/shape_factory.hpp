@@ -26,5 +26,7 @@ ShapePtr smooth_triangle(const Vec3& a, const Vec3& na, const Vec3& b, const Vec
                          const Vec3& nc);
 ShapePtr mesh(geometry::MeshData data);
 ShapePtr blob(double threshold, std::vector<geometry::BlobComponent> components);
+/// POV-Ray quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }.
+ShapePtr quadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear, double constant);
 
 }  // namespace snell::sdl::shapes

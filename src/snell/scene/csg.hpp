@@ -1,0 +1,58 @@
+#pragma once
+// Constructive solid geometry over whole Objects (POV-Ray 3.7 reference, "Constructive Solid Geometry"):
+// each child keeps its own transform, texture and interior, so a hit reports the child that was hit.
+// As in POV-Ray's csg.cpp, a CSG hit is a hit of one child kept or dropped by inside tests of the others;
+// `difference { A B C }` is `intersection { A, inverse B, inverse C }` (the parser inverts B and C), and
+// `clipped_by` is an intersection whose clipping children contribute inside tests but no surface.
+#include <memory>
+#include <vector>
+
+#include "snell/math/bounds.hpp"
+#include "snell/math/ray.hpp"
+
+namespace snell::scene {
+
+struct Object;
+struct SurfaceHit;
+
+enum class CsgKind {
+  /// Every child surface (a union nested in CSG, or declared with inverse).
+  union_of,
+  /// Child surfaces that no other child contains: no internal surfaces.
+  merge,
+  /// Child surfaces that every other child contains.
+  intersection,
+};
+
+class Csg {
+ public:
+  /// Children are placed in world space (their transforms include the CSG's). Only the first
+  /// `surface_children` children can be hit; the rest only clip (all of them when it is 0).
+  Csg(CsgKind kind, std::vector<std::shared_ptr<const Object>> children, size_t surface_children = 0);
+
+  /// Nearest kept hit in (t_min, t_max); `hit.object` is the leaf Object hit.
+  bool intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
+  /// Every kept hit in (t_min, t_max), appended in increasing t.
+  void all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const;
+  bool inside(const math::Vec3& world_point) const;
+  /// World bounds: union of the children for union and merge, their overlap for an intersection (so a
+  /// difference, whose later children are inverted and unbounded, gets the first child's bounds).
+  const math::Bounds3& bounds() const { return bounds_; }
+  /// Bounds of the points `inside` accepts.
+  const math::Bounds3& solid_bounds() const { return solid_bounds_; }
+
+  CsgKind kind() const { return kind_; }
+  const std::vector<std::shared_ptr<const Object>>& children() const { return children_; }
+
+ private:
+  /// Whether a hit on child `i` at `p` is a surface of the combined solid.
+  bool keeps(size_t i, const math::Vec3& p) const;
+
+  CsgKind kind_;
+  std::vector<std::shared_ptr<const Object>> children_;
+  size_t surface_children_;
+  math::Bounds3 bounds_;
+  math::Bounds3 solid_bounds_;
+};
+
+}  // namespace snell::scene
