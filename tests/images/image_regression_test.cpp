@@ -50,8 +50,8 @@ TEST_P(ImageRegression, MatchesPovRayRender) {
   const std::string log = run_capture(render);
   ASSERT_TRUE(fs::exists(out)) << log;
 
-  const std::string json =
-      run_capture("/usr/bin/python3 " + imgdiff.string() + " " + reference.string() + " " + out.string() + " --json");
+  const std::string json = run_capture("/usr/bin/python3 " + imgdiff.string() + " " + reference.string() +
+                                       " " + out.string() + " --json");
   const double ssim = json_number(json, "ssim");
   RecordProperty("ssim", std::to_string(ssim));
   EXPECT_GE(ssim, c.min_ssim) << c.name << ": " << json;
@@ -62,7 +62,8 @@ TEST_P(ImageRegression, MatchesPovRayRender) {
 INSTANTIATE_TEST_SUITE_P(PovRayScenes, ImageRegression,
                          ::testing::Values(Case{"lit_spheres", 0.95}, Case{"mirror_and_glass", 0.95},
                                            Case{"filtered_shadows", 0.95}, Case{"shapes", 0.95},
-                                           Case{"lights_and_camera", 0.95}, Case{"blob_metaballs", 0.95}),
+                                           Case{"lights_and_camera", 0.95}, Case{"blob_metaballs", 0.95},
+                                           Case{"csg_and_patterns", 0.95}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -117,8 +117,9 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   sp.opacity = scene_.settings.language_version < 3.7 ? 1.0 - pc.filter - pc.transmit
                                                       : 1.0 - pc.filter * pc.rgb.max() - pc.transmit;
 
-  const scene::Object* object = hit.object;
-  const double object_ior = ior_of(object);
+  // Interiors are tracked per solid: the CSG object for a hit on one of its children.
+  const scene::Object* object = hit.solid ? hit.solid : hit.object;
+  const double object_ior = ior_of(object->interior ? object : hit.object);
   // Relative ior n2/n1 for Fresnel reflection (trace.cpp, ComputeRelativeIOR).
   double relative_ior = object_ior;
   if (!inside.empty()) {

@@ -25,6 +25,7 @@ SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& loca
   if (flags.inverse && length_squared(local.shading_normal) > 0) hit.shading_normal = -hit.shading_normal;
   hit.uv = local.uv;
   hit.object = this;
+  hit.solid = this;
   hit.part = local.part;
   return hit;
 }
@@ -33,6 +34,7 @@ bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& h
   if (csg) {
     if (!csg->intersect(ray, t_min, t_max, hit)) return false;
     if (flags.inverse) flip(hit);  // the leaf's own inverse is already in its normal
+    hit.solid = this;
     return true;
   }
   geometry::LocalHit local;
@@ -45,8 +47,10 @@ void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<Su
   if (csg) {
     const size_t first = hits.size();
     csg->all_hits(ray, t_min, t_max, hits);
-    if (flags.inverse)
-      for (size_t i = first; i < hits.size(); ++i) flip(hits[i]);
+    for (size_t i = first; i < hits.size(); ++i) {
+      if (flags.inverse) flip(hits[i]);
+      hits[i].solid = this;
+    }
     return;
   }
   geometry::HitList local;

@@ -41,6 +41,10 @@ struct SurfaceHit {
   Vec3 shading_normal;
   math::Vec2 uv;
   const Object* object = nullptr;
+  /// The scene-level object whose solid this surface bounds: `object` itself, or the CSG object that
+  /// contains it. Interiors are entered and left per solid (a ray may enter a glass merge through one
+  /// child and leave through another).
+  const Object* solid = nullptr;
   int part = -1;
 };
 
