@@ -10,8 +10,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "snell/math/constants.hpp"
 #include "snell/math/pcg32.hpp"
 #include "snell/render/integrator.hpp"
+#include "snell/scene/lens_samples.hpp"
 
 namespace snell::render {
 
@@ -54,7 +56,8 @@ RenderResult Renderer::render() const {
   const auto camera = scene::make_camera(scene_.camera);
   const int w = options_.width, h = options_.height;
   const std::vector<Tile> tiles = make_tiles(w, h);
-  const int passes = options_.antialias ? 2 : 1;
+  // Focal blur samples already spread over each pixel, so they are its anti-aliasing too.
+  const int passes = options_.antialias && !scene_.camera.focal_blur() ? 2 : 1;
 
   RenderResult result;
   result.image = io::Image(w, h);
@@ -74,15 +77,43 @@ RenderResult Renderer::render() const {
     }
   };
 
-  // Pass 1: one ray through each pixel centre.
+  // A point with no camera ray (outside a fisheye's circle) is black, as POV-Ray leaves it.
+  auto trace_point = [&](double sx, double sy, TraceContext& ctx) {
+    const auto ray = camera->generate_ray(sx, sy, options_.time);
+    return ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
+  };
+
+  // Focal blur (POV-Ray "Focal Blur"): blur_samples rays per pixel, each from its own lens point and its own
+  // place in the pixel, averaged. POV-Ray stops early once the samples agree (confidence, variance); we
+  // always take all of them. Seeded by pixel and sample so images do not depend on threads.
+  const scene::CameraSpec& cam = scene_.camera;
+  const bool focal_blur = cam.focal_blur();
+  auto blurred_pixel = [&](int x, int y, TraceContext& ctx) {
+    const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
+    const uint64_t frame = static_cast<uint64_t>(options_.frame);
+    ctx.rng.seed(math::mix_seed(pixel, 0x1e45, frame, options_.seed), 0x2545f4914f6cdd1dULL);
+    const double rotation = ctx.rng.next_double() * math::kTwoPi;
+    Color sum{0, 0, 0};
+    for (int k = 0; k < cam.blur_samples; ++k) {
+      ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(k) + 1, frame, options_.seed),
+                   0x2545f4914f6cdd1dULL);
+      const double dx = ctx.rng.next_double(), dy = ctx.rng.next_double();
+      const double ju = ctx.rng.next_double(), jv = ctx.rng.next_double();
+      const math::Vec2 lens = scene::lens_sample(k, cam.blur_samples, rotation, ju, jv);
+      const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, options_.time);
+      if (ray) sum += integrator->trace_camera_ray(*ray, ctx);
+    }
+    return sum / static_cast<double>(cam.blur_samples);
+  };
+
+  // Pass 1: one ray through each pixel centre (or the focal blur samples).
   io::Image& image = result.image;
   auto first_pass = [&](const Tile& t) {
     TraceContext& ctx = contexts.local();
     for (int y = t.y0; y < t.y1; ++y)
-      for (int x = t.x0; x < t.x1; ++x) {
-        const math::Ray ray = camera->generate_ray((x + 0.5) / w, (y + 0.5) / h, options_.time);
-        image.set(x, y, integrator->trace_camera_ray(ray, ctx));
-      }
+      for (int x = t.x0; x < t.x1; ++x)
+        image.set(x, y,
+                  focal_blur ? blurred_pixel(x, y, ctx) : trace_point((x + 0.5) / w, (y + 0.5) / h, ctx));
   };
 
   // Pass 2 (POV-Ray "Anti-Aliasing Options", method 1): a pixel that differs from a neighbour by more than
@@ -116,8 +147,7 @@ RenderResult Renderer::render() const {
               dx += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
               dy += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
             }
-            const math::Ray ray = camera->generate_ray((x + dx) / w, (y + dy) / h, options_.time);
-            sum += integrator->trace_camera_ray(ray, ctx);
+            sum += trace_point((x + dx) / w, (y + dy) / h, ctx);
           }
         image.set(x, y, sum / static_cast<double>(n * n + 1));
       }
