@@ -49,11 +49,26 @@ TEST(CameraRender, FocalBlurIsIdenticalForAnyThreadCount) {
   const scene::Scene s = spheres(blurred());
   const RenderResult one = render(s, 1), two = render(s, 2);
   EXPECT_EQ(one.image.rgb, two.image.rgb);
-  EXPECT_EQ(one.rays.camera, 40u * 30u * 9u);
+  // POV-Ray's stopping rule: the first batch of 7 always, the other 2 only where the colour varies.
+  EXPECT_GE(one.rays.camera, 40u * 30u * 7u);
+  EXPECT_LT(one.rays.camera, 40u * 30u * 9u);
+  EXPECT_GT(one.rays.camera, 40u * 30u * 7u);
   // The blur samples are the anti-aliasing too: no second pass.
   const RenderResult aa = render(s, 2, true);
   EXPECT_EQ(aa.supersampled_pixels, 0u);
   EXPECT_EQ(aa.image.rgb, one.image.rgb);
+  // blur_samples 9, 9: no stopping before 9.
+  scene::Scene all = s;
+  all.camera.blur_samples_min = 9;
+  EXPECT_EQ(render(all, 2).rays.camera, 40u * 30u * 9u);
+}
+
+TEST(CameraRender, FocalBlurStopsEarlierWithLooserVariance) {
+  scene::Scene tight = spheres(blurred()), loose = tight;
+  tight.camera.blur_samples = loose.camera.blur_samples = 40;
+  tight.camera.variance = 1e-6;
+  loose.camera.variance = 0.1;
+  EXPECT_LT(render(loose, 2).rays.camera, render(tight, 2).rays.camera);
 }
 
 scene::Scene one_sphere(const scene::CameraSpec& camera, double z, double radius) {

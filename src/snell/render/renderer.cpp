@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include "snell/math/constants.hpp"
 #include "snell/math/pcg32.hpp"
 #include "snell/render/integrator.hpp"
+#include "snell/scene/blur_confidence.hpp"
 #include "snell/scene/lens_samples.hpp"
 
 namespace snell::render {
@@ -83,27 +85,40 @@ RenderResult Renderer::render() const {
     return ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
   };
 
-  // Focal blur (POV-Ray "Focal Blur"): blur_samples rays per pixel, each from its own lens point and its own
-  // place in the pixel, averaged. POV-Ray stops early once the samples agree (confidence, variance); we
-  // always take all of them. Seeded by pixel and sample so images do not depend on threads.
+  // Focal blur (POV-Ray "Focal Blur"): rays from points spread over the lens and over the pixel, taken in
+  // batches until the pixel's mean colour is known well enough (confidence, variance) or blur_samples are
+  // spent. Seeded by pixel and sample so images do not depend on threads.
   const scene::CameraSpec& cam = scene_.camera;
   const bool focal_blur = cam.focal_blur();
+  const std::vector<double> thresholds =
+      focal_blur ? scene::blur_variance_thresholds(cam.blur_samples, cam.confidence, cam.variance)
+                 : std::vector<double>{};
   auto blurred_pixel = [&](int x, int y, TraceContext& ctx) {
     const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
     const uint64_t frame = static_cast<uint64_t>(options_.frame);
-    ctx.rng.seed(math::mix_seed(pixel, 0x1e45, frame, options_.seed), 0x2545f4914f6cdd1dULL);
-    const double rotation = ctx.rng.next_double() * math::kTwoPi;
-    Color sum{0, 0, 0};
-    for (int k = 0; k < cam.blur_samples; ++k) {
-      ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(k) + 1, frame, options_.seed),
-                   0x2545f4914f6cdd1dULL);
-      const double dx = ctx.rng.next_double(), dy = ctx.rng.next_double();
-      const double ju = ctx.rng.next_double(), jv = ctx.rng.next_double();
-      const math::Vec2 lens = scene::lens_sample(k, cam.blur_samples, rotation, ju, jv);
-      const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, options_.time);
-      if (ray) sum += integrator->trace_camera_ray(*ray, ctx);
+    constexpr uint64_t kStream = 0x2545f4914f6cdd1dULL;
+    ctx.rng.seed(math::mix_seed(pixel, 0x1e45, frame, options_.seed), kStream);
+    const double shift_u = ctx.rng.next_double(), shift_v = ctx.rng.next_double();
+    Color sum{0, 0, 0}, sum_sq{0, 0, 0};
+    int n = 0;
+    for (int batch = 0; n < cam.blur_samples; ++batch) {
+      const int size = scene::blur_batch_size(batch, cam.blur_samples);
+      for (int i = 0; i < size && n < cam.blur_samples; ++i, ++n) {
+        ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(n) + 1, frame, options_.seed), kStream);
+        const double dx = ctx.rng.next_double(), dy = ctx.rng.next_double();
+        const math::Vec2 lens = scene::lens_sample(n, shift_u, shift_v);
+        const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, options_.time);
+        const Color c = ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
+        sum += c;
+        sum_sq += Color{c.r * c.r, c.g * c.g, c.b * c.b};
+      }
+      // Variance of the mean, per channel.
+      const double k = 1.0 / n;
+      const auto var = [&](double s, double s2) { return std::fabs((s2 * k - (s * k) * (s * k)) * k); };
+      const double worst = std::max({var(sum.r, sum_sq.r), var(sum.g, sum_sq.g), var(sum.b, sum_sq.b)});
+      if (n >= cam.blur_samples_min && worst < thresholds[static_cast<size_t>(n - 1)]) break;
     }
-    return sum / static_cast<double>(cam.blur_samples);
+    return sum / static_cast<double>(n);
   };
 
   // Pass 1: one ray through each pixel centre (or the focal blur samples).
