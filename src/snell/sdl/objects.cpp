@@ -89,7 +89,8 @@ ParsedObject Parser::parse_shape(const Token& keyword) {
   ParsedObject o;
   o.where = keyword.where;
   expect("{", w.c_str());
-  const auto comma = [&] { expect(",", w.c_str()); };
+  // POV-Ray's Parse_Comma takes a comma if there is one: `box { <0,0,0> <1,1,1> }` is valid.
+  const auto comma = [&] { accept(","); };
   try {
     if (w == "sphere") {
       const math::Vec3 c = parse_vector();

@@ -85,7 +85,13 @@ class Parser {
 
   // ---- expressions (expressions.cpp) ----
   Numeric parse_numeric();
+  /// An argument of a scene item: arithmetic only (`+ - * /`, unary, parentheses), as POV-Ray's
+  /// Parse_Float/Parse_Vector read it, so `box { <0,0,0><1,1,1> }` is two vectors, not a comparison.
+  /// Comparisons, `&`, `|` and `?:` are read inside parentheses, vector components and arguments.
   double parse_float();
+  /// A directive's value (`#if`, `#while`, `#switch`...): a full expression.
+  double parse_directive_float();
+  Numeric parse_argument_numeric();
   math::Vec3 parse_vector();
   /// A float or vector, promoted to a colour (POV-Ray's colour expression with rgb/red/... keywords).
   material::Rgbft parse_color();
