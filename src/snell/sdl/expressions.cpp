@@ -352,6 +352,7 @@ Numeric Parser::parse_multiplicative() {
 
 Numeric Parser::parse_unary() {
   const Token& t = peek();
+  const NestingGuard guard(*this, t.where);
   if (t.is_symbol("-")) {
     raw_next();
     Numeric a = parse_unary();

@@ -22,6 +22,7 @@ bool is_shape_keyword(const std::string& w) {
 
 std::optional<ParsedObject> Parser::parse_object_if_any() {
   const Token t = peek();
+  const NestingGuard guard(*this, t.where);
   if (t.kind != Token::Kind::identifier) return std::nullopt;
   const std::string& w = t.text;
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
