@@ -11,7 +11,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "snell/math/constants.hpp"
 #include "snell/math/pcg32.hpp"
 #include "snell/render/integrator.hpp"
 #include "snell/scene/blur_confidence.hpp"

@@ -34,10 +34,11 @@ struct CameraSpec {
   /// Spherical camera: horizontal and vertical field of view in degrees.
   double h_angle = 360;
   double v_angle = 180;
-  // Focal blur (POV-Ray reference "Focal Blur"). On when aperture != 0 and blur_samples > 0.
+  // Focal blur (POV-Ray reference "Focal Blur"). On when aperture != 0 and blur_samples > 0; a pixel takes
+  // at most blur_samples rays and stops once confidence/variance say its mean colour is good enough.
   double aperture = 0;
   int blur_samples = 0;
-  int blur_samples_min = 0;  // adaptive stopping is not done: every pixel takes blur_samples rays
+  int blur_samples_min = 0;  // no early stop before this many (`blur_samples MIN, MAX`)
   double confidence = 0.9;
   double variance = 1.0 / 10000.0;
   math::Vec3 focal_point{0, 0, 1};
