@@ -39,6 +39,8 @@ TEST(SdlCameraTypes, SphericalTakesTwoAngles) {
   const auto both = test::parse("camera { spherical angle 120, 40 }").camera;
   EXPECT_DOUBLE_EQ(both.h_angle, 120);
   EXPECT_DOUBLE_EQ(both.v_angle, 40);
+  const auto no_comma = test::parse("camera { spherical angle 120 40 location 1 }").camera;
+  EXPECT_DOUBLE_EQ(no_comma.v_angle, 40);
   const auto one = test::parse("camera { spherical angle 120 }").camera;
   EXPECT_DOUBLE_EQ(one.h_angle, 120);
   EXPECT_DOUBLE_EQ(one.v_angle, 60);
@@ -68,6 +70,7 @@ TEST(SdlFocalBlur, SamplesApertureAndConfidence) {
   EXPECT_DOUBLE_EQ(cam.confidence, 0.95);
   EXPECT_DOUBLE_EQ(cam.variance, 0.001);
   EXPECT_TRUE(cam.focal_blur());
+  EXPECT_EQ(test::parse("camera { blur_samples 7 30 aperture 1 }").camera.blur_samples, 30);
   const auto one = test::parse("camera { aperture 1 blur_samples 12 }").camera;
   EXPECT_EQ(one.blur_samples, 12);
   EXPECT_EQ(one.blur_samples_min, 0);

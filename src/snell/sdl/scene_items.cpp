@@ -207,7 +207,8 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
       const double a = parse_float();
       if (a < 0) fail(t.where, "negative camera angle");
       angle = a;
-      if (accept(",")) {
+      // POV-Ray reads the optional second value with or without the comma.
+      if ((accept(",") || cam.kind == Kind::spherical) && starts_numeric()) {
         const double v = parse_float();
         if (v < 0) fail(t.where, "negative vertical camera angle");
         v_angle = v;
@@ -218,7 +219,8 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
       // `blur_samples N` or `blur_samples MIN, MAX` (POV-Ray 3.7 reference "Focal Blur").
       const double first = parse_float();
       if (first <= 0) fail(t.where, "the number of focal blur samples must be positive");
-      const double second = accept(",") ? parse_float() : 0;
+      accept(",");
+      const double second = starts_numeric() ? parse_float() : 0;
       if (second == 0) {
         cam.blur_samples = static_cast<int>(first);
         cam.blur_samples_min = 0;
