@@ -91,7 +91,7 @@ Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double w
                                const InteriorStack& inside, TraceContext& context) const {
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return Color(0);
   scene::SurfaceHit hit;
-  if (!accel_.intersect(ray, 0.0, math::kInfinity, kind, hit)) return scene_.background.rgb;
+  if (!accel_.intersect(ray, 0.0, math::kInfinity, kind, hit)) return scene_.miss_color(ray.direction);
   return shade(ray, hit, level, weight, inside, context);
 }
 

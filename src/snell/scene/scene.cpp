@@ -9,4 +9,17 @@ double Scene::effective_assumed_gamma() const {
   return settings.language_version >= 3.7 ? 1.0 : 2.2;
 }
 
+math::Color Scene::miss_color(const math::Vec3& direction) const {
+  if (!sky_sphere) return background.rgb;
+  material::PatternPoint point;
+  point.p = normalize(sky_sphere->transform.inverse_vector(normalize(direction)));
+  math::Color result = background.rgb;
+  for (const auto& pigment : sky_sphere->pigments) {
+    const material::Rgbft c = pigment->at(point);
+    // A layer covers what lies below except where it lets light through (filter tints, transmit does not).
+    result = c.rgb * (1 - c.filter - c.transmit) + result * (c.rgb * c.filter + math::Color(c.transmit));
+  }
+  return result;
+}
+
 }  // namespace snell::scene

@@ -2,9 +2,12 @@
 // The scene as the renderer sees it: built once (by the SDL parser, a procedural generator or C++ code),
 // immutable while rendering, read by every thread without locks.
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "snell/material/pigment.hpp"
 #include "snell/material/rgbft.hpp"
+#include "snell/math/transform.hpp"
 #include "snell/scene/camera.hpp"
 #include "snell/scene/light.hpp"
 #include "snell/scene/object.hpp"
@@ -22,16 +25,27 @@ struct GlobalSettings {
   double language_version = 3.7;
 };
 
+/// POV-Ray `sky_sphere {}`: pigments seen in the direction of every ray that hits nothing, the first one
+/// at the bottom and each later one over it where it is opaque (POV-Ray 3.7 reference, "Sky Sphere").
+struct SkySphere {
+  std::vector<std::shared_ptr<const material::Pigment>> pigments;
+  /// Sky space -> world: rays' directions are taken back through it before the pigments see them.
+  math::Transform transform;
+};
+
 struct Scene {
   std::vector<std::shared_ptr<const Object>> objects;
   std::vector<Light> lights;
   CameraSpec camera;
   material::Rgbft background;
+  std::optional<SkySphere> sky_sphere;
   GlobalSettings settings;
 
   /// The gamma the output is encoded relative to: POV-Ray 3.7 reads colours as linear under
   /// `assumed_gamma 1`, and without any assumed_gamma below #version 3.7 does no gamma handling.
   double effective_assumed_gamma() const;
+  /// What a ray that hits nothing sees: the sky sphere over the background.
+  math::Color miss_color(const math::Vec3& direction) const;
 };
 
 }  // namespace snell::scene

@@ -53,7 +53,12 @@ void Parser::parse_scene_items() {
       parse_global_settings();
       continue;
     }
-    if (t.text == "fog" || t.text == "sky_sphere" || t.text == "rainbow" || t.text == "media") {
+    if (t.text == "sky_sphere") {
+      raw_next();
+      parse_sky_sphere();
+      continue;
+    }
+    if (t.text == "fog" || t.text == "rainbow" || t.text == "media") {
       raw_next();
       warn(t.where, t.text + " is not supported yet; ignored");
       skip_block(t.text);
@@ -67,6 +72,35 @@ void Parser::parse_scene_items() {
       fail(t.where, "'" + t.text + "' cannot stand alone here; use object { " + t.text + " }");
     fail(t.where, "unknown keyword '" + t.text + "'");
   }
+}
+
+void Parser::parse_sky_sphere() {
+  expect("{", "sky_sphere");
+  scene::SkySphere sky;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      break;
+    }
+    if (t.is_word("pigment")) {
+      raw_next();
+      sky.pigments.push_back(parse_pigment_block(nullptr));
+      continue;
+    }
+    if (auto step = parse_transform_item()) {
+      sky.transform = *step * sky.transform;
+      continue;
+    }
+    if (t.is_word("emission")) {
+      raw_next();
+      warn(t.where, "sky_sphere emission is not supported yet; ignored");
+      parse_color();
+      continue;
+    }
+    fail(t.where, "unexpected '" + t.text + "' in sky_sphere");
+  }
+  scene_.sky_sphere = std::move(sky);
 }
 
 void Parser::parse_background() {
