@@ -35,6 +35,8 @@ Numeric combine(const Numeric& a, const Numeric& b, Op op) {
   return r;
 }
 
+using FunctionPtr = std::shared_ptr<const function::Function>;
+
 bool is_string_function(const std::string& n) {
   return n == "concat" || n == "str" || n == "chr" || n == "substr" || n == "strupr" || n == "strlwr";
 }
@@ -98,7 +100,9 @@ bool Parser::starts_numeric() {
   if (t.kind == Token::Kind::symbol)
     return t.text == "(" || t.text == "<" || t.text == "-" || t.text == "+" || t.text == "!";
   if (t.kind != Token::Kind::identifier) return false;
-  if (const Value* v = lookup(t.text)) return std::holds_alternative<Numeric>(v->data);
+  if (const Value* v = lookup(t.text))
+    return std::holds_alternative<Numeric>(v->data) ||
+           std::holds_alternative<std::shared_ptr<const function::Function>>(v->data);
   static const char* const words[] = {"x",
                                       "y",
                                       "z",
@@ -184,10 +188,15 @@ Value Parser::parse_rvalue() {
   if (starts_string()) return Value{parse_string()};
   if (t.kind == Token::Kind::identifier) {
     const Token word = t;
-    if (const Value* v = lookup(word.text); v && !std::holds_alternative<Numeric>(v->data)) {
+    if (const Value* v = lookup(word.text);
+        v && !std::holds_alternative<Numeric>(v->data) && !std::holds_alternative<FunctionPtr>(v->data)) {
       Value copy = *v;
       raw_next();
       return copy;
+    }
+    if (word.text == "function") {
+      raw_next();
+      return Value{parse_function_block()};
     }
     if (word.text == "pigment") {
       raw_next();
@@ -427,6 +436,11 @@ Numeric Parser::parse_primary() {
       raw_next();
       return *n;
     }
+    if (const auto* f = std::get_if<FunctionPtr>(&v->data)) {
+      const FunctionPtr callee = *f;  // the call may run macros that change the symbol table
+      raw_next();
+      return call_function(t, *callee);
+    }
     fail(t.where, "expected a float, vector or color, but '" + w + "' is a " + v->type_name());
   }
   const auto constant = [&](double value) {
@@ -488,7 +502,8 @@ Numeric Parser::parse_color_keywords() {
     const scene::SourceLocation where = t.where;
     const std::string w = t.kind == Token::Kind::identifier ? t.text : std::string();
     if (w == "color") {
-      if (any) return c;  // a second `color` starts the next colour (old colour_map `[a b color c1 color c2]`)
+      if (any)
+        return c;  // a second `color` starts the next colour (old colour_map `[a b color c1 color c2]`)
       raw_next();
       continue;
     }
