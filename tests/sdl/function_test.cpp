@@ -70,6 +70,19 @@ TEST(SdlFunction, InternalFunctionsThroughFunctionsInc) {
   EXPECT_DOUBLE_EQ(value_of(inc + " #declare F = function { f_sphere(x, y, z, 2) }", "F(0, 0, 3)"), 1);
 }
 
+TEST(SdlFunction, FunctionsPassByNameToMacrosAndDeclares) {
+  // math.inc's fn_Gradient takes a function by name: |grad(x^2 + y^2 + z^2)| = 2|p| (central differences
+  // are exact for a quadratic, up to rounding).
+  const std::string decls = R"(
+    #include "math.inc"
+    #declare Q = function { x * x + y * y + z * z }
+    #declare G = fn_Gradient(Q)
+    #declare Q2 = Q
+  )";
+  EXPECT_NEAR(value_of(decls, "G(1, 2, 2)"), 6, 1e-6);
+  EXPECT_DOUBLE_EQ(value_of(decls, "Q2(1, 1, 1)"), 3);
+}
+
 TEST(SdlFunction, FunctionsIncAndShapesIncParse) {
   EXPECT_EQ(test::error_of("#include \"functions.inc\""), "");
   EXPECT_EQ(test::error_of("#include \"shapes.inc\""), "");

@@ -188,8 +188,16 @@ Value Parser::parse_rvalue() {
   if (starts_string()) return Value{parse_string()};
   if (t.kind == Token::Kind::identifier) {
     const Token word = t;
-    if (const Value* v = lookup(word.text);
-        v && !std::holds_alternative<Numeric>(v->data) && !std::holds_alternative<FunctionPtr>(v->data)) {
+    if (const Value* v = lookup(word.text); v && std::holds_alternative<FunctionPtr>(v->data)) {
+      // A function name not followed by `(` is the function itself (a macro argument, `#declare G = F`);
+      // with `(` it is a call inside a float expression.
+      const Frame& f = frames_.back();
+      if (f.pos + 1 >= f.tokens->size() || !(*f.tokens)[f.pos + 1].is_symbol("(")) {
+        Value copy = *v;
+        raw_next();
+        return copy;
+      }
+    } else if (v && !std::holds_alternative<Numeric>(v->data)) {
       Value copy = *v;
       raw_next();
       return copy;
