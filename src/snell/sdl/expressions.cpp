@@ -35,6 +35,8 @@ Numeric combine(const Numeric& a, const Numeric& b, Op op) {
   return r;
 }
 
+using FunctionPtr = std::shared_ptr<const function::Function>;
+
 bool is_string_function(const std::string& n) {
   return n == "concat" || n == "str" || n == "chr" || n == "substr" || n == "strupr" || n == "strlwr";
 }
@@ -109,7 +111,9 @@ bool Parser::starts_numeric() {
   if (t.kind == Token::Kind::symbol)
     return t.text == "(" || t.text == "<" || t.text == "-" || t.text == "+" || t.text == "!";
   if (t.kind != Token::Kind::identifier) return false;
-  if (const Value* v = lookup(t.text)) return std::holds_alternative<Numeric>(v->data);
+  if (const Value* v = lookup(t.text))
+    return std::holds_alternative<Numeric>(v->data) ||
+           std::holds_alternative<std::shared_ptr<const function::Function>>(v->data);
   static const char* const words[] = {"x",
                                       "y",
                                       "z",
@@ -195,10 +199,23 @@ Value Parser::parse_rvalue() {
   if (starts_string()) return Value{parse_string()};
   if (t.kind == Token::Kind::identifier) {
     const Token word = t;
-    if (const Value* v = lookup(word.text); v && !std::holds_alternative<Numeric>(v->data)) {
+    if (const Value* v = lookup(word.text); v && std::holds_alternative<FunctionPtr>(v->data)) {
+      // A function name not followed by `(` is the function itself (a macro argument, `#declare G = F`);
+      // with `(` it is a call inside a float expression.
+      const Frame& f = frames_.back();
+      if (f.pos + 1 >= f.tokens->size() || !(*f.tokens)[f.pos + 1].is_symbol("(")) {
+        Value copy = *v;
+        raw_next();
+        return copy;
+      }
+    } else if (v && !std::holds_alternative<Numeric>(v->data)) {
       Value copy = *v;
       raw_next();
       return copy;
+    }
+    if (word.text == "function") {
+      raw_next();
+      return Value{parse_function_block()};
     }
     if (word.text == "pigment") {
       raw_next();
@@ -438,6 +455,11 @@ Numeric Parser::parse_primary() {
     if (const auto* n = std::get_if<Numeric>(&v->data)) {
       raw_next();
       return *n;
+    }
+    if (const auto* f = std::get_if<FunctionPtr>(&v->data)) {
+      const FunctionPtr callee = *f;  // the call may run macros that change the symbol table
+      raw_next();
+      return call_function(t, *callee);
     }
     fail(t.where, "expected a float, vector or color, but '" + w + "' is a " + v->type_name());
   }

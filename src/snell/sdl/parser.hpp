@@ -17,6 +17,8 @@
 namespace snell::sdl {
 
 class Parser {
+  friend class FunctionCompiler;
+
  public:
   explicit Parser(const ParseOptions& options);
 
@@ -114,6 +116,12 @@ class Parser {
   void expect(const char* symbol, const char* context);
   Token expect_identifier(const char* context);
   bool accept(const char* symbol);
+
+  // ---- user functions (function_compiler.cpp) ----
+  /// `[(params)] { body }` after the `function` keyword (also for isosurface's `function { ... }`).
+  std::shared_ptr<const function::Function> parse_function_block();
+  /// `(args)` after the name of a declared function, in an ordinary expression.
+  Numeric call_function(const Token& name, const function::Function& f);
 
   // ---- materials (materials.cpp) ----
   std::shared_ptr<const material::Pigment> parse_pigment_block(

@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "snell/function/function.hpp"
 #include "snell/material/interior.hpp"
 #include "snell/material/pigment.hpp"
 #include "snell/material/texture.hpp"
@@ -44,12 +45,13 @@ struct Value {
                std::shared_ptr<const material::Texture>, material::Finish,
                std::shared_ptr<const material::Interior>, ParsedObject, std::shared_ptr<const Macro>,
                scene::CameraSpec, std::shared_ptr<const texture::ColorMap>,
-               std::shared_ptr<const texture::PigmentMap>>
+               std::shared_ptr<const texture::PigmentMap>, std::shared_ptr<const function::Function>>
       data;
 
   const char* type_name() const {
-    static const char* names[] = {"number",   "string", "transform", "pigment", "texture",   "finish",
-                                  "interior", "object", "macro",     "camera",  "color_map", "pigment_map"};
+    static const char* names[] = {"number",    "string",      "transform", "pigment", "texture",
+                                  "finish",    "interior",    "object",    "macro",   "camera",
+                                  "color_map", "pigment_map", "function"};
     if (const auto* n = std::get_if<Numeric>(&data))
       return n->color ? "color" : (n->size == 1 ? "float" : "vector");
     return names[data.index()];

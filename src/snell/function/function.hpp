@@ -1,0 +1,111 @@
+#pragma once
+// Compiled POV-Ray user functions (POV-Ray 3.7 reference, "User-Defined Functions"): `function { expr }`
+// is compiled once into a flat stack program, so isosurfaces and parametric objects can evaluate it
+// millions of times without touching the parser. Depends on math only (plus texture's Perlin noise for
+// f_noise3d), never on the scene-language parser.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace snell::function {
+
+/// A call that cannot be evaluated (an internal not implemented, a pattern function, a bad argument count).
+class FunctionError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Function;
+
+enum class Op : std::uint8_t {
+  constant,   // push value
+  parameter,  // push args[index]
+  add,
+  subtract,
+  multiply,
+  divide,
+  negate,
+  logical_not,
+  less,
+  less_equal,
+  equal,
+  not_equal,
+  greater_equal,
+  greater,
+  logical_and,
+  logical_or,
+  unary,   // top = unary(top)
+  binary,  // b = pop, a = pop, push binary(a, b)
+  call,    // pop `count` arguments, push callees[index](arguments)
+};
+
+struct Instruction {
+  Op op = Op::constant;
+  std::uint32_t index = 0;
+  std::uint32_t count = 0;
+  double value = 0;
+  double (*unary)(double) = nullptr;
+  double (*binary)(double, double) = nullptr;
+};
+
+/// A straight-line stack program (functions have no side effects, so select() evaluates all its arguments
+/// and needs no jumps).
+struct Program {
+  std::vector<Instruction> code;
+  std::vector<std::shared_ptr<const Function>> callees;
+  std::uint32_t max_stack = 0;
+};
+
+/// Appends instructions while tracking the stack depth, so the evaluator can size its stack once.
+class ProgramBuilder {
+ public:
+  void constant(double value);
+  void parameter(std::uint32_t index);
+  /// Any operator but constant/parameter/unary/binary/call.
+  void op(Op op);
+  void unary(double (*fn)(double));
+  void binary(double (*fn)(double, double));
+  void call(std::shared_ptr<const Function> callee, std::uint32_t argument_count);
+  Program finish();
+
+ private:
+  void push(int change);
+  Program program_;
+  std::uint32_t depth_ = 0;
+};
+
+class Function {
+ public:
+  using Native = double (*)(const double* args);
+
+  static std::shared_ptr<const Function> compiled(std::vector<std::string> parameters, Program program);
+  static std::shared_ptr<const Function> native(std::string name, std::size_t arity, Native fn);
+  /// Declares fine; every call throws FunctionError with `reason`.
+  static std::shared_ptr<const Function> unsupported(std::string name, std::size_t arity, std::string reason);
+
+  std::size_t arity() const { return arity_; }
+  const std::string& name() const { return name_; }
+  const std::vector<std::string>& parameters() const { return parameters_; }
+  bool supported() const { return kind_ != Kind::unsupported; }
+
+  /// Evaluates with exactly arity() arguments; throws FunctionError otherwise or when unsupported.
+  double operator()(std::span<const double> args) const;
+  double call(const double* args) const;
+
+ private:
+  enum class Kind { compiled, native, unsupported };
+  double run(const double* args) const;
+
+  Kind kind_ = Kind::compiled;
+  std::string name_;
+  std::size_t arity_ = 0;
+  std::vector<std::string> parameters_;
+  Program program_;
+  Native native_ = nullptr;
+  std::string reason_;
+};
+
+}  // namespace snell::function

@@ -1,0 +1,368 @@
+// `function { ... }`: POV-Ray's user-defined functions (POV-Ray 3.7 reference, "User-Defined Functions",
+// "functions.inc"). The body is compiled once, as its tokens arrive, into a function::Program; declared
+// floats are folded in as constants at compile time, as POV-Ray does. The function language has the float
+// operators + - * / (no `^`: POV-Ray 3.7 rejects it), comparisons, & | ! and the float built-ins; there is
+// no `?:` (POV-Ray rejects it too; select() takes its place).
+#include <cmath>
+#include <span>
+
+#include "snell/function/internals.hpp"
+#include "snell/math/constants.hpp"
+#include "snell/sdl/parser.hpp"
+
+namespace snell::sdl {
+
+namespace {
+
+struct Builtin {
+  const char* name;
+  double (*unary)(double);
+  double (*binary)(double, double);
+};
+
+// Function-language built-ins (reference "Float Functions"; log is base 10, ln natural, int truncates).
+const Builtin kBuiltins[] = {
+    {"abs", [](double a) { return std::fabs(a); }, nullptr},
+    {"acos", [](double a) { return std::acos(a); }, nullptr},
+    {"acosh", [](double a) { return std::acosh(a); }, nullptr},
+    {"asin", [](double a) { return std::asin(a); }, nullptr},
+    {"asinh", [](double a) { return std::asinh(a); }, nullptr},
+    {"atan", [](double a) { return std::atan(a); }, nullptr},
+    {"atanh", [](double a) { return std::atanh(a); }, nullptr},
+    {"ceil", [](double a) { return std::ceil(a); }, nullptr},
+    {"cos", [](double a) { return std::cos(a); }, nullptr},
+    {"cosh", [](double a) { return std::cosh(a); }, nullptr},
+    {"degrees", [](double a) { return a * 180 / math::kPi; }, nullptr},
+    {"exp", [](double a) { return std::exp(a); }, nullptr},
+    {"floor", [](double a) { return std::floor(a); }, nullptr},
+    {"int", [](double a) { return std::trunc(a); }, nullptr},
+    {"ln", [](double a) { return std::log(a); }, nullptr},
+    {"log", [](double a) { return std::log10(a); }, nullptr},
+    {"radians", [](double a) { return a * math::kPi / 180; }, nullptr},
+    {"sin", [](double a) { return std::sin(a); }, nullptr},
+    {"sinh", [](double a) { return std::sinh(a); }, nullptr},
+    {"sqr", [](double a) { return a * a; }, nullptr},
+    {"sqrt", [](double a) { return std::sqrt(a); }, nullptr},
+    {"tan", [](double a) { return std::tan(a); }, nullptr},
+    {"tanh", [](double a) { return std::tanh(a); }, nullptr},
+    {"atan2", nullptr, [](double a, double b) { return std::atan2(a, b); }},
+    {"pow", nullptr, [](double a, double b) { return std::pow(a, b); }},
+    {"mod", nullptr, [](double a, double b) { return std::fmod(a, b); }},
+    {"div", nullptr, [](double a, double b) { return std::trunc(a / b); }},
+};
+
+double min2(double a, double b) {
+  return std::min(a, b);
+}
+double max2(double a, double b) {
+  return std::max(a, b);
+}
+
+// select(a, b, c): b if a < 0 else c; select(a, b, c, d): b if a < 0, c if a == 0, d if a > 0.
+const std::shared_ptr<const function::Function>& select3() {
+  static const auto f =
+      function::Function::native("select", 3, [](const double* a) { return a[0] < 0 ? a[1] : a[2]; });
+  return f;
+}
+const std::shared_ptr<const function::Function>& select4() {
+  static const auto f = function::Function::native(
+      "select", 4, [](const double* a) { return a[0] < 0 ? a[1] : (a[0] == 0 ? a[2] : a[3]); });
+  return f;
+}
+
+}  // namespace
+
+/// Recursive descent over the body's tokens with the precedence of ordinary float expressions.
+class FunctionCompiler {
+ public:
+  FunctionCompiler(Parser& parser, const std::vector<std::string>& parameters)
+      : p_(parser), parameters_(parameters) {}
+
+  void expression() { logical_or(); }
+  function::Program finish() { return out_.finish(); }
+
+ private:
+  void logical_or() {
+    logical_and();
+    while (p_.peek().is_symbol("|")) {
+      p_.raw_next();
+      logical_and();
+      out_.op(function::Op::logical_or);
+    }
+  }
+
+  void logical_and() {
+    comparison();
+    while (p_.peek().is_symbol("&")) {
+      p_.raw_next();
+      comparison();
+      out_.op(function::Op::logical_and);
+    }
+  }
+
+  void comparison() {
+    additive();
+    for (;;) {
+      const Token& t = p_.peek();
+      function::Op op;
+      if (t.is_symbol("<"))
+        op = function::Op::less;
+      else if (t.is_symbol("<="))
+        op = function::Op::less_equal;
+      else if (t.is_symbol("="))
+        op = function::Op::equal;
+      else if (t.is_symbol("!="))
+        op = function::Op::not_equal;
+      else if (t.is_symbol(">="))
+        op = function::Op::greater_equal;
+      else if (t.is_symbol(">"))
+        op = function::Op::greater;
+      else
+        return;
+      p_.raw_next();
+      additive();
+      out_.op(op);
+    }
+  }
+
+  void additive() {
+    multiplicative();
+    for (;;) {
+      const Token& t = p_.peek();
+      if (!t.is_symbol("+") && !t.is_symbol("-")) return;
+      const bool add = t.is_symbol("+");
+      p_.raw_next();
+      multiplicative();
+      out_.op(add ? function::Op::add : function::Op::subtract);
+    }
+  }
+
+  void multiplicative() {
+    unary();
+    for (;;) {
+      const Token& t = p_.peek();
+      if (!t.is_symbol("*") && !t.is_symbol("/")) return;
+      const bool multiply = t.is_symbol("*");
+      p_.raw_next();
+      unary();
+      out_.op(multiply ? function::Op::multiply : function::Op::divide);
+    }
+  }
+
+  void unary() {
+    const Token& t = p_.peek();
+    if (t.is_symbol("-")) {
+      p_.raw_next();
+      unary();
+      out_.op(function::Op::negate);
+    } else if (t.is_symbol("+")) {
+      p_.raw_next();
+      unary();
+    } else if (t.is_symbol("!")) {
+      p_.raw_next();
+      unary();
+      out_.op(function::Op::logical_not);
+    } else {
+      primary();
+    }
+  }
+
+  /// `( a, b, ... )`: compiles each argument, returns how many.
+  std::uint32_t arguments(const std::string& what) {
+    p_.expect("(", what.c_str());
+    std::uint32_t n = 0;
+    if (p_.accept(")")) return 0;
+    for (;;) {
+      expression();
+      ++n;
+      if (p_.accept(")")) return n;
+      p_.expect(",", ("arguments of " + what).c_str());
+    }
+  }
+
+  void primary() {
+    const Token t = p_.peek();
+    if (t.kind == Token::Kind::number) {
+      p_.raw_next();
+      out_.constant(t.number);
+      return;
+    }
+    if (t.is_symbol("(")) {
+      p_.raw_next();
+      expression();
+      p_.expect(")", "parenthesised expression in a function");
+      return;
+    }
+    if (t.kind != Token::Kind::identifier) {
+      p_.fail(t.where, t.kind == Token::Kind::end ? "unexpected end of file in a function"
+                                                  : "expected a function expression, found '" + t.text + "'");
+    }
+    const std::string& w = t.text;
+    for (std::size_t i = 0; i < parameters_.size(); ++i) {
+      if (parameters_[i] == w) {
+        p_.raw_next();
+        out_.parameter(static_cast<std::uint32_t>(i));
+        return;
+      }
+    }
+    if (const Value* v = p_.lookup(w)) return declared(t, *v);
+    const auto constant = [&](double value) {
+      p_.raw_next();
+      out_.constant(value);
+    };
+    if (w == "pi") return constant(math::kPi);
+    if (w == "true" || w == "on" || w == "yes") return constant(1);
+    if (w == "false" || w == "off" || w == "no") return constant(0);
+    if (w == "clock") return constant(p_.options_.clock);
+    if (w == "min" || w == "max") {
+      p_.raw_next();
+      const std::uint32_t n = arguments(w);
+      if (n < 1) p_.fail(t.where, w + " needs at least one argument");
+      for (std::uint32_t i = 1; i < n; ++i) out_.binary(w == "min" ? min2 : max2);
+      return;
+    }
+    if (w == "select") {
+      p_.raw_next();
+      const std::uint32_t n = arguments(w);
+      if (n != 3 && n != 4) p_.fail(t.where, "select takes 3 or 4 arguments, found " + std::to_string(n));
+      out_.call(n == 3 ? select3() : select4(), n);
+      return;
+    }
+    for (const Builtin& b : kBuiltins) {
+      if (w != b.name) continue;
+      p_.raw_next();
+      const std::uint32_t want = b.unary ? 1 : 2;
+      const std::uint32_t n = arguments(w);
+      if (n != want)
+        p_.fail(t.where, w + " takes " + std::to_string(want) + " argument(s), found " + std::to_string(n));
+      if (b.unary)
+        out_.unary(b.unary);
+      else
+        out_.binary(b.binary);
+      return;
+    }
+    p_.fail(t.where, "unknown identifier '" + w + "' in a function (functions.inc declares POV-Ray's f_*)");
+  }
+
+  void declared(const Token& t, const Value& v) {
+    p_.raw_next();
+    if (const auto* f = std::get_if<std::shared_ptr<const function::Function>>(&v.data)) {
+      const std::uint32_t n = arguments(t.text);
+      if (n != (*f)->arity())
+        p_.fail(t.where, t.text + " takes " + std::to_string((*f)->arity()) + " argument(s), found " +
+                             std::to_string(n));
+      out_.call(*f, n);
+      return;
+    }
+    const auto* n = std::get_if<Numeric>(&v.data);
+    if (!n) p_.fail(t.where, "'" + t.text + "' is a " + v.type_name() + ", which a function cannot use");
+    if (n->size == 1) {
+      out_.constant(n->x());
+      return;
+    }
+    // A declared vector or colour may be used through one component (`V.x`).
+    if (!p_.accept("."))
+      p_.fail(t.where, "a function can only use a vector's components, as in " + t.text + ".x");
+    const Token field = p_.raw_next();
+    static const std::pair<const char*, int> fields[] = {
+        {"x", 0},   {"y", 1},     {"z", 2},    {"t", 3},      {"u", 0},       {"v", 1},
+        {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
+    for (const auto& [name, index] : fields) {
+      if (field.is_word(name) && index < (n->color ? 5 : n->size)) {
+        out_.constant(n->v[static_cast<std::size_t>(index)]);
+        return;
+      }
+    }
+    p_.fail(field.where, "'." + field.text + "' is not a component of " + t.text);
+  }
+
+  Parser& p_;
+  const std::vector<std::string>& parameters_;
+  function::ProgramBuilder out_;
+};
+
+std::shared_ptr<const function::Function> Parser::parse_function_block() {
+  std::vector<std::string> parameters;
+  if (accept("(")) {
+    for (;;) {
+      const Token name = expect_identifier("a function's parameter list");
+      for (const std::string& other : parameters)
+        if (other == name.text) fail(name.where, "parameter '" + name.text + "' appears twice");
+      parameters.push_back(name.text);
+      if (accept(")")) break;
+      expect(",", "a function's parameter list");
+    }
+  } else {
+    parameters = {"x", "y", "z"};
+  }
+  expect("{", "function");
+  const Token first = peek();
+  if (first.is_word("internal")) {
+    raw_next();
+    expect("(", "internal()");
+    const Token number = raw_next();
+    if (number.kind != Token::Kind::number) fail(number.where, "internal() needs a function number");
+    expect(")", "internal()");
+    expect("}", "function");
+    try {
+      return function::internal_function(static_cast<int>(number.number));
+    } catch (const function::FunctionError& e) {
+      fail(number.where, e.what());
+    }
+  }
+  if (first.is_word("pattern") || first.is_word("pigment") || first.is_word("transform") ||
+      first.is_word("spline")) {
+    // Declaring one succeeds (functions.inc declares several) so that scenes which never call it parse.
+    raw_next();
+    const std::string kind = first.text;
+    std::string detail;
+    if (peek().is_symbol("{")) {
+      raw_next();
+      if (peek().kind == Token::Kind::identifier) detail = " " + peek().text;
+      // Back onto the `{` is not possible; skip the rest of the inner block by depth.
+      int depth = 1;
+      while (depth > 0) {
+        const Token tok = raw_next();
+        if (tok.kind == Token::Kind::end) fail(first.where, "unterminated " + kind + " block in a function");
+        if (tok.is_symbol("{")) ++depth;
+        if (tok.is_symbol("}")) --depth;
+      }
+    }
+    expect("}", "function");
+    const std::size_t arity = kind == "spline" ? 1 : 3;
+    return function::Function::unsupported("function { " + kind + " }", arity,
+                                           "function { " + kind + " {" + detail +
+                                               " } } is not supported yet (declared at " +
+                                               first.where.to_string() + ")");
+  }
+  FunctionCompiler compiler(*this, parameters);
+  compiler.expression();
+  expect("}", "function");
+  try {
+    return function::Function::compiled(std::move(parameters), compiler.finish());
+  } catch (const function::FunctionError& e) {
+    fail(first.where, e.what());
+  }
+}
+
+Numeric Parser::call_function(const Token& name, const function::Function& f) {
+  expect("(", ("call of " + name.text).c_str());
+  std::vector<double> args;
+  if (!accept(")")) {
+    for (;;) {
+      args.push_back(parse_float());
+      if (accept(")")) break;
+      expect(",", ("arguments of " + name.text).c_str());
+    }
+  }
+  if (args.size() != f.arity())
+    fail(name.where, name.text + " takes " + std::to_string(f.arity()) + " argument(s), found " +
+                         std::to_string(args.size()));
+  try {
+    return Numeric::of(f(std::span<const double>(args)));
+  } catch (const function::FunctionError& e) {
+    fail(name.where, "calling " + name.text + ": " + e.what());
+  }
+}
+
+}  // namespace snell::sdl
