@@ -36,5 +36,14 @@ TEST(SdlArguments, ComparisonsStillWorkInParenthesesAndDirectives) {
   EXPECT_DOUBLE_EQ(s->radius(), 5);
 }
 
+TEST(SdlArguments, VectorComponentsWithoutCommas) {
+  const auto scene = test::parse("#declare A = 1; #declare B = 2;\nsphere { <A B 3>, 1 }");
+  const auto* s = dynamic_cast<const geometry::Sphere*>(scene.objects.at(0)->shape.get());
+  ASSERT_NE(s, nullptr);
+  EXPECT_DOUBLE_EQ(s->center().x, 1);
+  EXPECT_DOUBLE_EQ(s->center().y, 2);
+  EXPECT_DOUBLE_EQ(s->center().z, 3);
+}
+
 }  // namespace
 }  // namespace snell::sdl

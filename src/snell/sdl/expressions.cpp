@@ -439,7 +439,7 @@ Numeric Parser::parse_primary() {
       if (r.size == 5) fail(where, "a vector has at most 5 components");
       r.v[static_cast<size_t>(r.size++)] = c.x();
       if (accept(">")) break;
-      expect(",", "vector literal");
+      accept(",");  // POV-Ray's Parse_Comma: `<A B C>` is a vector too
     }
     in_vector_ = saved;
     if (r.size < 2) fail(t.where, "a vector needs at least 2 components");
