@@ -45,5 +45,12 @@ TEST(SdlArguments, VectorComponentsWithoutCommas) {
   EXPECT_DOUBLE_EQ(s->center().z, 3);
 }
 
+TEST(SdlArguments, StringsMaySpanLines) {
+  const auto scene = test::parse("#declare S = \"a\nb\";\nsphere { 0, strlen(S) }");
+  const auto* s = dynamic_cast<const geometry::Sphere*>(scene.objects.at(0)->shape.get());
+  ASSERT_NE(s, nullptr);
+  EXPECT_DOUBLE_EQ(s->radius(), 3);
+}
+
 }  // namespace
 }  // namespace snell::sdl

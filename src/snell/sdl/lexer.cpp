@@ -145,8 +145,8 @@ class Lexer {
     advance();  // opening quote
     std::string out;
     for (;;) {
-      if (pos_ >= text_.size() || text_[pos_] == '\n')
-        throw LocatedError{where, "unterminated string: missing closing '\"'"};
+      // A string may span lines, as POV-Ray reads it (shapes3.inc has one); only the end of file ends it.
+      if (pos_ >= text_.size()) throw LocatedError{where, "unterminated string: missing closing '\"'"};
       const char c = text_[pos_];
       advance();
       if (c == '"') return out;
