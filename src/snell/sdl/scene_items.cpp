@@ -60,6 +60,7 @@ void Parser::parse_scene_items() {
       continue;
     }
     if (auto object = parse_object_if_any()) {
+      if (!object->texture) object->texture = default_texture_;  // `#default {}` in force now
       flatten(*object, scene_.objects, scene_.lights);
       continue;
     }
