@@ -141,6 +141,17 @@ TEST(SdlArrays, ElementsOfAnyTypeAndCopies) {
   EXPECT_EQ(sdl::test::solid_color(*s.objects[0]).rgb.g, 0);  // P is unchanged by assigning to its copy Q
 }
 
+TEST(SdlArrays, IfdefTellsWhetherAnElementIsSet) {
+  const auto out = debug_of(R"(
+    #declare A = array[2]
+    #declare A[1] = 5;
+    #ifdef (A[0]) #debug "0 set" #else #debug "0 unset" #end
+    #ifndef (A[1]) #debug "1 unset" #else #debug "1 set" #end)");
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0], "0 unset");
+  EXPECT_EQ(out[1], "1 set");
+}
+
 TEST(SdlArrays, Errors) {
   EXPECT_NE(sdl::test::error_of("#declare A = array[2]\n#declare X = A[2];").find("out of range"),
             std::string::npos);

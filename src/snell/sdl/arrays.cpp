@@ -83,6 +83,14 @@ void Parser::inject_array_element(const Array& array, const Token& name) {
   frames_.back().injected = Token{Token::Kind::identifier, key, 0, name.where};
 }
 
+bool Parser::array_element_is_set(const Token& name) {
+  const Value* v = lookup(name.text);
+  const auto* array = v ? std::get_if<std::shared_ptr<Array>>(&v->data) : nullptr;
+  if (!array) fail(name.where, "'" + name.text + "' is not an array");
+  const auto held = *array;
+  return held->items[parse_array_index(*held, name)].has_value();
+}
+
 void Parser::declare_array_element(const Token& name, bool local) {
   const Value* v = lookup(name.text);
   const auto* array = v ? std::get_if<std::shared_ptr<Array>>(&v->data) : nullptr;

@@ -95,6 +95,8 @@ class Parser {
   /// Replaces `Name[i]...` (its name just read) with a token naming the element's value, so that every
   /// place that accepts an identifier accepts an element too.
   void inject_array_element(const Array& array, const Token& name);
+  /// `Name[i]...` after `#ifdef (`: whether that element has been given a value.
+  bool array_element_is_set(const Token& name);
   /// `#declare Name[i]... = value`.
   void declare_array_element(const Token& name, bool local);
 

@@ -193,8 +193,9 @@ void Parser::handle_directive(const Token& d) {
     expect("(", "#ifdef");
     const Token name = raw_next();
     if (name.kind != Token::Kind::identifier) fail(name.where, "expected an identifier in #" + n);
+    bool defined = lookup(name.text) != nullptr;
+    if (raw_peek().is_symbol("[")) defined = array_element_is_set(name);  // `#ifdef (A[i])`
     expect(")", "#ifdef");
-    const bool defined = lookup(name.text) != nullptr;
     return directive_if(d, n == "ifdef" ? defined : !defined);
   }
   if (n == "else" || n == "elseif") return directive_else(d);
