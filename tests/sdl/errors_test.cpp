@@ -59,3 +59,35 @@ TEST(SdlErrors, ErrorsInIncludedFilesNameTheIncludeSite) {
 
 }  // namespace
 }  // namespace snell::sdl
+
+namespace snell::sdl {
+namespace {
+
+std::string nested_error(const std::string& text) {
+  try {
+    test::parse(text);
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SdlNestingLimit, DeepInputIsAnErrorNotACrash) {
+  EXPECT_NE(nested_error("sphere { 0, " + std::string(100000, '(') + "1").find("nested more than"),
+            std::string::npos);
+  EXPECT_NE(nested_error("sphere { 0, " + std::string(100000, '-') + "1 }").find("nested more than"),
+            std::string::npos);
+  std::string unions;
+  for (int i = 0; i < 5000; ++i) unions += "union { ";
+  EXPECT_NE(nested_error(unions).find("nested more than"), std::string::npos);
+  std::string pigments = "sphere { 0, 1 ";
+  for (int i = 0; i < 5000; ++i) pigments += "pigment { checker ";
+  EXPECT_NE(nested_error(pigments).find("nested more than"), std::string::npos);
+}
+
+TEST(SdlNestingLimit, ModerateNestingIsFine) {
+  EXPECT_EQ(nested_error("sphere { 0, " + std::string(50, '(') + "1" + std::string(50, ')') + " }"), "");
+}
+
+}  // namespace
+}  // namespace snell::sdl

@@ -62,24 +62,35 @@ Token Parser::expect_identifier(const char* context) {
   return t;
 }
 
+Numeric Parser::parse_argument_numeric() {
+  return parse_additive();
+}
+
+double Parser::parse_directive_float() {
+  const scene::SourceLocation where = peek().where;
+  const Numeric n = parse_numeric();
+  if (n.size != 1) fail(where, "expected a float, found a " + std::string(n.color ? "color" : "vector"));
+  return n.x();
+}
+
 double Parser::parse_float() {
   const Token& start = peek();
   const scene::SourceLocation where = start.where;
-  const Numeric n = parse_numeric();
+  const Numeric n = parse_argument_numeric();
   if (n.size != 1) fail(where, "expected a float, found a " + std::string(n.color ? "color" : "vector"));
   return n.x();
 }
 
 math::Vec3 Parser::parse_vector() {
   const scene::SourceLocation where = peek().where;
-  const Numeric n = parse_numeric();
+  const Numeric n = parse_argument_numeric();
   if (n.color) fail(where, "expected a vector, found a color");
   if (n.size == 2) return {n.v[0], n.v[1], 0};
   return n.vec3();
 }
 
 material::Rgbft Parser::parse_color() {
-  Numeric n = widen(parse_numeric(), 5);
+  Numeric n = widen(parse_argument_numeric(), 5);
   return {{n.v[0], n.v[1], n.v[2]}, n.v[3], n.v[4]};
 }
 
@@ -341,6 +352,7 @@ Numeric Parser::parse_multiplicative() {
 
 Numeric Parser::parse_unary() {
   const Token& t = peek();
+  const NestingGuard guard(*this, t.where);
   if (t.is_symbol("-")) {
     raw_next();
     Numeric a = parse_unary();

@@ -250,6 +250,7 @@ std::shared_ptr<const material::Interior> Parser::parse_interior_block() {
 }
 
 std::shared_ptr<const material::Texture> Parser::parse_texture_block() {
+  const NestingGuard guard(*this, peek().where);
   expect("{", "texture");
   auto texture = std::make_shared<material::Texture>(*default_texture_);
   texture->pigment = nullptr;

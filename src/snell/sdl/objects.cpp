@@ -22,6 +22,7 @@ bool is_shape_keyword(const std::string& w) {
 
 std::optional<ParsedObject> Parser::parse_object_if_any() {
   const Token t = peek();
+  const NestingGuard guard(*this, t.where);
   if (t.kind != Token::Kind::identifier) return std::nullopt;
   const std::string& w = t.text;
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
@@ -89,7 +90,8 @@ ParsedObject Parser::parse_shape(const Token& keyword) {
   ParsedObject o;
   o.where = keyword.where;
   expect("{", w.c_str());
-  const auto comma = [&] { expect(",", w.c_str()); };
+  // POV-Ray's Parse_Comma takes a comma if there is one: `box { <0,0,0> <1,1,1> }` is valid.
+  const auto comma = [&] { accept(","); };
   try {
     if (w == "sphere") {
       const math::Vec3 c = parse_vector();

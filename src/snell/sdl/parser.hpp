@@ -112,7 +112,13 @@ class Parser {
 
   // ---- expressions (expressions.cpp) ----
   Numeric parse_numeric();
+  /// An argument of a scene item: arithmetic only (`+ - * /`, unary, parentheses), as POV-Ray's
+  /// Parse_Float/Parse_Vector read it, so `box { <0,0,0><1,1,1> }` is two vectors, not a comparison.
+  /// Comparisons, `&`, `|` and `?:` are read inside parentheses, vector components and arguments.
   double parse_float();
+  /// A directive's value (`#if`, `#while`, `#switch`...): a full expression.
+  double parse_directive_float();
+  Numeric parse_argument_numeric();
   math::Vec3 parse_vector();
   /// A float or vector, promoted to a colour (POV-Ray's colour expression with rgb/red/... keywords).
   material::Rgbft parse_color();
@@ -201,6 +207,25 @@ class Parser {
   std::vector<math::Pcg32> random_streams_;
   std::vector<std::map<std::string, Value>> scopes_;
   int macro_depth_ = 0;
+  /// Depth of recursive descent (expressions, objects, pigments, textures): hostile input such as 100000
+  /// opening parentheses or 5000 nested unions gives a ParseError instead of a stack overflow.
+  int nesting_ = 0;
+  static constexpr int kMaxNesting = 256;
+  class NestingGuard {
+   public:
+    NestingGuard(Parser& parser, const scene::SourceLocation& where) : parser_(parser) {
+      if (++parser_.nesting_ > kMaxNesting) {
+        --parser_.nesting_;
+        parser_.fail(where, "nested more than " + std::to_string(kMaxNesting) + " levels deep");
+      }
+    }
+    ~NestingGuard() { --parser_.nesting_; }
+    NestingGuard(const NestingGuard&) = delete;
+    NestingGuard& operator=(const NestingGuard&) = delete;
+
+   private:
+    Parser& parser_;
+  };
   double version_ = 3.7;
   bool in_vector_ = false;
   bool assumed_gamma_seen_ = false;

@@ -119,6 +119,7 @@ struct Parser::PigmentBuilder {
 
 std::shared_ptr<const material::Pigment> Parser::parse_pigment_block(
     const std::shared_ptr<const material::Pigment>& base) {
+  const NestingGuard guard(*this, peek().where);
   expect("{", "pigment");
   PigmentBuilder builder;
   builder.start_from(base);

@@ -188,7 +188,7 @@ void Parser::handle_directive(const Token& d) {
     warn(name.where, "#undef of '" + name.text + "', which is not declared");
     return;
   }
-  if (n == "if") return directive_if(d, parse_float() != 0);
+  if (n == "if") return directive_if(d, parse_directive_float() != 0);
   if (n == "ifdef" || n == "ifndef") {
     expect("(", "#ifdef");
     const Token name = raw_next();
@@ -219,7 +219,7 @@ void Parser::handle_directive(const Token& d) {
   if (n == "macro") return directive_macro(d);
   if (n == "include") return directive_include(d);
   if (n == "version") {
-    version_ = parse_float();
+    version_ = parse_directive_float();
     if (peek_after_value().is_symbol(";")) raw_next();
     return;
   }
@@ -275,7 +275,7 @@ void Parser::directive_if(const Token& d, bool condition) {
     if (stop.text == "else")
       condition = true;
     else
-      condition = parse_float() != 0;
+      condition = parse_directive_float() != 0;
   }
 }
 
@@ -306,7 +306,7 @@ void Parser::directive_end(const Token& d) {
         fail(c.where, "#while loop ran more than " + std::to_string(options_.max_while_iterations) +
                           " iterations (ParseOptions::max_while_iterations)");
       frames_.back().pos = c.resume_pos;
-      if (parse_float() != 0) return;
+      if (parse_directive_float() != 0) return;
       const Token start{Token::Kind::directive, "while", 0, c.where};
       conds_.pop_back();
       skip_to({"end"}, start);
@@ -389,7 +389,7 @@ void Parser::directive_default(const Token& d) {
 
 void Parser::directive_while(const Token& d) {
   const size_t resume = frames_.back().pos;
-  if (parse_float() != 0) {
+  if (parse_directive_float() != 0) {
     conds_.push_back({Cond::Kind::while_, frames_.size() - 1, resume, 0, d.where});
     return;
   }
@@ -397,20 +397,20 @@ void Parser::directive_while(const Token& d) {
 }
 
 void Parser::directive_switch(const Token& d) {
-  const double value = parse_float();
+  const double value = parse_directive_float();
   for (;;) {
     const Token clause = skip_to({"case", "range", "else", "end"}, d);
     if (clause.text == "end") return;
     bool match = clause.text == "else";
     if (clause.text == "case") {
       expect("(", "#case");
-      match = parse_float() == value;
+      match = parse_directive_float() == value;
       expect(")", "#case");
     } else if (clause.text == "range") {
       expect("(", "#range");
-      const double lo = parse_float();
+      const double lo = parse_directive_float();
       expect(",", "#range");
-      const double hi = parse_float();
+      const double hi = parse_directive_float();
       expect(")", "#range");
       match = value >= lo && value <= hi;
     }
