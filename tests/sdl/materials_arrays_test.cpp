@@ -112,6 +112,11 @@ TEST(SdlDefault, DefaultFinishAndPigmentApplyToLaterObjects) {
   EXPECT_DOUBLE_EQ(s.objects[3]->texture->finish.ambient.r, 0.4);
 }
 
+TEST(SdlDefault, OldSpellingWithoutHash) {
+  const auto s = sdl::test::parse("default { finish { ambient 0.5 } }\nsphere { 0, 1 }");
+  EXPECT_DOUBLE_EQ(s.objects[0]->texture->finish.ambient.r, 0.5);
+}
+
 TEST(SdlArrays, InitializerReadAssignAndSizes) {
   const auto out = debug_of(R"(
     #declare A = array[3] { 1, 2, 3 }
