@@ -12,6 +12,7 @@
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
 #include "snell/accel/accelerator.hpp"
+#include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
 #include "snell/render/renderer.hpp"
 #include "snell/sdl/parse.hpp"
@@ -80,6 +81,8 @@ int render(CliOptions& o) {
   if (!o.quiet)
     for (const std::string& w : o.warnings) fmt::print(stderr, "snell: warning: {}\n", w);
 
+  // Load the image plugin while the scene is parsed and rendered (snell/io/oiio_plugin_abi.hpp).
+  if (!o.parse_only) io::preload_image_backend();
   const auto t_parse = Clock::now();
   sdl::ParseOptions po;
   po.library_paths = o.library_paths;

@@ -1,13 +1,13 @@
 #include "snell/io/image_file.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <string>
 #include <system_error>
 #include <vector>
+
+#include "snell/io/image_backend.hpp"
 
 namespace snell::io {
 
@@ -49,27 +49,25 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
   temp_name.append(ext);
   const fs::path temp = path.parent_path() / temp_name;
 
-  OIIO::TypeDesc type = OIIO::TypeDesc::FLOAT;
+  int type = kSnellFloat;
   std::vector<uint8_t> bytes8;
   std::vector<uint16_t> bytes16;
   const void* data = image.rgb.data();
   if (ext == ".png") {
     if (options.bits == 16) {
       bytes16 = quantise<uint16_t>(image, options.encoding, 65535.0);
-      type = OIIO::TypeDesc::UINT16;
+      type = kSnellUint16;
       data = bytes16.data();
     } else {
       bytes8 = quantise<uint8_t>(image, options.encoding, 255.0);
-      type = OIIO::TypeDesc::UINT8;
+      type = kSnellUint8;
       data = bytes8.data();
     }
   }
-  auto out = OIIO::ImageOutput::create(temp.string());
-  if (!out) throw ImageIoError("cannot write '" + path.string() + "': " + OIIO::geterror());
-  OIIO::ImageSpec spec(image.width, image.height, 3, type);
-  if (ext == ".png") spec.attribute("oiio:ColorSpace", "sRGB");
-  if (!out->open(temp.string(), spec) || !out->write_image(type, data) || !out->close()) {
-    const std::string why = out->geterror();
+  const ImageBackend& backend = image_backend();
+  char why[512] = {};
+  if (backend.write(temp.c_str(), image.width, image.height, type, data, ext == ".png", why, sizeof why) !=
+      0) {
     std::error_code ignored;
     fs::remove(temp, ignored);
     throw ImageIoError("cannot write '" + path.string() + "': " + why);
@@ -84,20 +82,15 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
 }
 
 Image read_image(const fs::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw ImageIoError("cannot read '" + path.string() + "': " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  const int channels = spec.nchannels;
-  if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
-    throw ImageIoError("cannot read '" + path.string() + "': empty image");
-  std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    throw ImageIoError("cannot read '" + path.string() + "': " + in->geterror());
-  Image image(spec.width, spec.height);
-  for (size_t p = 0; p < static_cast<size_t>(spec.width) * spec.height; ++p) {
-    for (int c = 0; c < 3; ++c)
-      image.rgb[p * 3 + c] = pixels[p * channels + std::min(c, channels < 3 ? 0 : c)];
-  }
+  const ImageBackend& backend = image_backend();
+  int width = 0, height = 0;
+  float* pixels = nullptr;
+  char why[512] = {};
+  if (backend.read(path.c_str(), &width, &height, &pixels, why, sizeof why) != 0)
+    throw ImageIoError("cannot read '" + path.string() + "': " + why);
+  Image image(width, height);
+  std::copy(pixels, pixels + static_cast<size_t>(width) * height * 3, image.rgb.begin());
+  backend.free(pixels);
   return image;
 }
 

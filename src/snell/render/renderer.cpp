@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -12,6 +13,8 @@
 
 #include "snell/math/pcg32.hpp"
 #include "snell/render/integrator.hpp"
+#include "snell/scene/blur_confidence.hpp"
+#include "snell/scene/lens_samples.hpp"
 
 namespace snell::render {
 
@@ -54,7 +57,8 @@ RenderResult Renderer::render() const {
   const auto camera = scene::make_camera(scene_.camera);
   const int w = options_.width, h = options_.height;
   const std::vector<Tile> tiles = make_tiles(w, h);
-  const int passes = options_.antialias ? 2 : 1;
+  // Focal blur samples already spread over each pixel, so they are its anti-aliasing too.
+  const int passes = options_.antialias && !scene_.camera.focal_blur() ? 2 : 1;
 
   RenderResult result;
   result.image = io::Image(w, h);
@@ -74,15 +78,56 @@ RenderResult Renderer::render() const {
     }
   };
 
-  // Pass 1: one ray through each pixel centre.
+  // A point with no camera ray (outside a fisheye's circle) is black, as POV-Ray leaves it.
+  auto trace_point = [&](double sx, double sy, TraceContext& ctx) {
+    const auto ray = camera->generate_ray(sx, sy, options_.time);
+    return ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
+  };
+
+  // Focal blur (POV-Ray "Focal Blur"): rays from points spread over the lens and over the pixel, taken in
+  // batches until the pixel's mean colour is known well enough (confidence, variance) or blur_samples are
+  // spent. Seeded by pixel and sample so images do not depend on threads.
+  const scene::CameraSpec& cam = scene_.camera;
+  const bool focal_blur = cam.focal_blur();
+  const std::vector<double> thresholds =
+      focal_blur ? scene::blur_variance_thresholds(cam.blur_samples, cam.confidence, cam.variance)
+                 : std::vector<double>{};
+  auto blurred_pixel = [&](int x, int y, TraceContext& ctx) {
+    const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
+    const uint64_t frame = static_cast<uint64_t>(options_.frame);
+    constexpr uint64_t kStream = 0x2545f4914f6cdd1dULL;
+    ctx.rng.seed(math::mix_seed(pixel, 0x1e45, frame, options_.seed), kStream);
+    const double shift_u = ctx.rng.next_double(), shift_v = ctx.rng.next_double();
+    Color sum{0, 0, 0}, sum_sq{0, 0, 0};
+    int n = 0;
+    for (int batch = 0; n < cam.blur_samples; ++batch) {
+      const int size = scene::blur_batch_size(batch, cam.blur_samples);
+      for (int i = 0; i < size && n < cam.blur_samples; ++i, ++n) {
+        ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(n) + 1, frame, options_.seed), kStream);
+        const double dx = ctx.rng.next_double(), dy = ctx.rng.next_double();
+        const math::Vec2 lens = scene::lens_sample(n, shift_u, shift_v);
+        const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, options_.time);
+        const Color c = ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
+        sum += c;
+        sum_sq += Color{c.r * c.r, c.g * c.g, c.b * c.b};
+      }
+      // Variance of the mean, per channel.
+      const double k = 1.0 / n;
+      const auto var = [&](double s, double s2) { return std::fabs((s2 * k - (s * k) * (s * k)) * k); };
+      const double worst = std::max({var(sum.r, sum_sq.r), var(sum.g, sum_sq.g), var(sum.b, sum_sq.b)});
+      if (n >= cam.blur_samples_min && worst < thresholds[static_cast<size_t>(n - 1)]) break;
+    }
+    return sum / static_cast<double>(n);
+  };
+
+  // Pass 1: one ray through each pixel centre (or the focal blur samples).
   io::Image& image = result.image;
   auto first_pass = [&](const Tile& t) {
     TraceContext& ctx = contexts.local();
     for (int y = t.y0; y < t.y1; ++y)
-      for (int x = t.x0; x < t.x1; ++x) {
-        const math::Ray ray = camera->generate_ray((x + 0.5) / w, (y + 0.5) / h, options_.time);
-        image.set(x, y, integrator->trace_camera_ray(ray, ctx));
-      }
+      for (int x = t.x0; x < t.x1; ++x)
+        image.set(x, y,
+                  focal_blur ? blurred_pixel(x, y, ctx) : trace_point((x + 0.5) / w, (y + 0.5) / h, ctx));
   };
 
   // Pass 2 (POV-Ray "Anti-Aliasing Options", method 1): a pixel that differs from a neighbour by more than
@@ -116,8 +161,7 @@ RenderResult Renderer::render() const {
               dx += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
               dy += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
             }
-            const math::Ray ray = camera->generate_ray((x + dx) / w, (y + dy) / h, options_.time);
-            sum += integrator->trace_camera_ray(ray, ctx);
+            sum += trace_point((x + dx) / w, (y + dy) / h, ctx);
           }
         image.set(x, y, sum / static_cast<double>(n * n + 1));
       }

@@ -11,7 +11,8 @@ struct SourceLocation {
   int column = 0;
 
   std::string to_string() const {
-    return (file ? *file : std::string("<scene>")) + ":" + std::to_string(line) + ":" + std::to_string(column);
+    return (file ? *file : std::string("<scene>")) + ":" + std::to_string(line) + ":" +
+           std::to_string(column);
   }
 };
 

@@ -156,8 +156,11 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
     }
   }
   std::optional<math::Vec3> look_at, up, right, sky;
-  std::optional<double> angle;
+  std::optional<double> angle, v_angle;
+  std::optional<math::Vec3> focal_point;
   math::Vec3 sky_v{0, 1, 0};
+  // POV-Ray's default focal distance is the direction length as last set by angle or look_at.
+  double direction_length = 1;
   for (;;) {
     const Token t = peek();
     if (t.is_symbol("}")) {
@@ -171,11 +174,28 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
     if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in camera");
     const std::string& w = t.text;
     raw_next();
+    using Kind = scene::CameraSpec::Kind;
     if (w == "perspective")
-      cam.kind = scene::CameraSpec::Kind::perspective;
+      cam.kind = Kind::perspective;
     else if (w == "orthographic")
-      cam.kind = scene::CameraSpec::Kind::orthographic;
-    else if (w == "location")
+      cam.kind = Kind::orthographic;
+    else if (w == "fisheye")
+      cam.kind = Kind::fisheye;
+    else if (w == "ultra_wide_angle")
+      cam.kind = Kind::ultra_wide_angle;
+    else if (w == "omnimax")
+      cam.kind = Kind::omnimax;
+    else if (w == "panoramic")
+      cam.kind = Kind::panoramic;
+    else if (w == "spherical")
+      cam.kind = Kind::spherical;
+    else if (w == "cylinder") {
+      const double n = parse_float();
+      static constexpr Kind kCylinders[] = {Kind::cylinder1, Kind::cylinder2, Kind::cylinder3,
+                                            Kind::cylinder4};
+      if (n != std::floor(n) || n < 1 || n > 4) fail(t.where, "cylinder camera type must be 1, 2, 3 or 4");
+      cam.kind = kCylinders[static_cast<int>(n) - 1];
+    } else if (w == "location")
       cam.location = parse_vector();
     else if (w == "direction")
       cam.direction = parse_vector();
@@ -188,20 +208,48 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
     else if (w == "look_at")
       look_at = parse_vector();
     else if (w == "angle") {
+      // The spherical camera takes `angle H [, V]`, V defaulting to H/2 (reference "Spherical projection").
       const double a = parse_float();
       if (a < 0) fail(t.where, "negative camera angle");
       angle = a;
+      // POV-Ray reads the optional second value with or without the comma.
+      if ((accept(",") || cam.kind == Kind::spherical) && starts_numeric()) {
+        const double v = parse_float();
+        if (v < 0) fail(t.where, "negative vertical camera angle");
+        v_angle = v;
+      }
     } else if (w == "aperture")
       cam.aperture = parse_float();
     else if (w == "blur_samples") {
-      cam.blur_samples = static_cast<int>(parse_float());
-      if (accept(",")) parse_float();
+      // `blur_samples N` or `blur_samples MIN, MAX` (POV-Ray 3.7 reference "Focal Blur").
+      const double first = parse_float();
+      if (first <= 0) fail(t.where, "the number of focal blur samples must be positive");
+      accept(",");
+      const double second = starts_numeric() ? parse_float() : 0;
+      if (second == 0) {
+        cam.blur_samples = static_cast<int>(first);
+        cam.blur_samples_min = 0;
+      } else {
+        if (first > second) fail(t.where, "focal blur samples minimum must not be larger than maximum");
+        cam.blur_samples_min = static_cast<int>(first);
+        cam.blur_samples = static_cast<int>(second);
+      }
+      if (cam.blur_samples > 4096) fail(t.where, "too many focal blur samples (at most 4096)");
     } else if (w == "focal_point")
-      cam.focal_point = parse_vector();
-    else if (w == "confidence" || w == "variance")
-      parse_float();
-    else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" || w == "panoramic" ||
-             w == "spherical" || w == "cylinder" || w == "mesh_camera" || w == "user_defined")
+      focal_point = parse_vector();
+    else if (w == "confidence") {
+      const double c = parse_float();
+      if (c > 0 && c < 1)
+        cam.confidence = c;
+      else
+        warn(t.where, "confidence must be between 0 and 1; keeping the default");
+    } else if (w == "variance") {
+      const double v = parse_float();
+      if (v >= 0 && v <= 1)
+        cam.variance = v;
+      else
+        warn(t.where, "variance must be between 0 and 1; keeping the default");
+    } else if (w == "mesh_camera" || w == "user_defined")
       fail(t.where, "the " + w + " camera is not supported yet");
     else if (w == "normal") {
       warn(t.where, "camera normal is not supported yet; ignored");
@@ -212,14 +260,22 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
   if (up) cam.up = *up;
   if (right) cam.right = *right;
   if (sky) sky_v = *sky;
-  if (angle) {
+  const bool planar =
+      cam.kind == scene::CameraSpec::Kind::perspective || cam.kind == scene::CameraSpec::Kind::orthographic;
+  if (angle && planar) {
     if (*angle >= 180) fail(peek().where, "camera angle must be below 180 degrees");
     if (*angle > 0 && length_squared(cam.direction) > 0) {
-      cam.direction = normalize(cam.direction) * (length(cam.right) / std::tan(*angle * math::kPi / 360) / 2);
+      direction_length = length(cam.right) / std::tan(*angle * math::kPi / 360) / 2;
+      cam.direction = normalize(cam.direction) * direction_length;
     }
+  } else if (angle && cam.kind == scene::CameraSpec::Kind::spherical) {
+    cam.h_angle = *angle;
+    cam.v_angle = v_angle ? *v_angle : *angle * 0.5;
+  } else if (angle) {
+    cam.angle = *angle;
   }
   if (look_at) {
-    const double direction_length = length(cam.direction);
+    direction_length = length(cam.direction);
     const double up_length = length(cam.up);
     const double right_length = length(cam.right);
     // Keep the handedness the written vectors had (right-handed cameras use `right -x`).
@@ -246,6 +302,13 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
       cam.up = cam.up * (k1 / k2);
     }
   }
+  if (focal_point) {
+    cam.focal_point = *focal_point;
+    cam.focal_distance = length(*focal_point - cam.location);
+  } else if (cam.focal_distance < 0) {
+    cam.focal_distance = direction_length;
+  }
+  if (cam.focal_distance == 0) cam.focal_distance = 1;
   cam.location = transform.point(cam.location);
   cam.direction = transform.vector(cam.direction);
   cam.up = transform.vector(cam.up);

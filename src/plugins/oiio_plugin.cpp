@@ -1,0 +1,74 @@
+// snell's OpenImageIO plugin: the only code that includes OpenImageIO (see snell/io/oiio_plugin_abi.hpp).
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "snell/io/oiio_plugin_abi.hpp"
+
+namespace {
+
+int fail(const std::string& message, char* error, size_t error_size) {
+  if (error_size > 0) {
+    const size_t n = std::min(message.size(), error_size - 1);
+    std::memcpy(error, message.data(), n);
+    error[n] = '\0';
+  }
+  return 1;
+}
+
+OIIO::TypeDesc type_of(int pixel_type) {
+  switch (pixel_type) {
+    case kSnellUint8:
+      return OIIO::TypeDesc::UINT8;
+    case kSnellUint16:
+      return OIIO::TypeDesc::UINT16;
+    default:
+      return OIIO::TypeDesc::FLOAT;
+  }
+}
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) int snell_oiio_write(const char* path, int width,
+                                                                       int height, int pixel_type,
+                                                                       const void* pixels, int srgb_tag,
+                                                                       char* error, size_t error_size) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return fail(OIIO::geterror(), error, error_size);
+  const OIIO::TypeDesc type = type_of(pixel_type);
+  OIIO::ImageSpec spec(width, height, 3, type);
+  if (srgb_tag) spec.attribute("oiio:ColorSpace", "sRGB");
+  if (!out->open(path, spec) || !out->write_image(type, pixels) || !out->close())
+    return fail(out->geterror(), error, error_size);
+  return 0;
+}
+
+extern "C" __attribute__((visibility("default"))) int snell_oiio_read(const char* path, int* width,
+                                                                      int* height, float** pixels,
+                                                                      char* error, size_t error_size) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return fail(OIIO::geterror(), error, error_size);
+  const OIIO::ImageSpec& spec = in->spec();
+  const int channels = spec.nchannels;
+  if (spec.width <= 0 || spec.height <= 0 || channels <= 0) return fail("empty image", error, error_size);
+  const size_t count = static_cast<size_t>(spec.width) * spec.height;
+  std::vector<float> all(count * channels);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, all.data()))
+    return fail(in->geterror(), error, error_size);
+  auto* rgb = static_cast<float*>(std::malloc(count * 3 * sizeof(float)));
+  if (!rgb) return fail("out of memory", error, error_size);
+  for (size_t p = 0; p < count; ++p)
+    for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = all[p * channels + (channels < 3 ? 0 : c)];
+  *width = spec.width;
+  *height = spec.height;
+  *pixels = rgb;
+  return 0;
+}
+
+extern "C" __attribute__((visibility("default"))) void snell_oiio_free(float* pixels) {
+  std::free(pixels);
+}

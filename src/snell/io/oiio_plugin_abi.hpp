@@ -1,0 +1,22 @@
+#pragma once
+// The C interface between snell and its OpenImageIO plugin (src/plugins/oiio_plugin.cpp).
+// Why a plugin: Debian's OpenImageIO links about 260 shared libraries (OpenCV, GStreamer, ffmpeg...), whose
+// loading and static constructors cost ~0.4 s at every start of a program linked to it. Loaded with dlopen
+// on a background thread (io::preload_image_backend), that cost overlaps parsing and rendering.
+#include <cstddef>
+
+extern "C" {
+
+/// Pixel types of the interleaved RGB buffers crossing the interface.
+enum SnellPixelType { kSnellUint8 = 0, kSnellUint16 = 1, kSnellFloat = 2 };
+
+/// Writes `width` x `height` RGB pixels to `path` (format by extension). `srgb_tag` marks the file as sRGB.
+/// Returns 0 on success, else writes a message into `error` (NUL-terminated, at most `error_size` bytes).
+using SnellOiioWrite = int (*)(const char* path, int width, int height, int pixel_type, const void* pixels,
+                               int srgb_tag, char* error, size_t error_size);
+/// Reads an image as interleaved float RGB (grey replicated, alpha dropped) into a buffer from malloc that
+/// the caller frees with the plugin's SnellOiioFree. Returns 0 on success.
+using SnellOiioRead = int (*)(const char* path, int* width, int* height, float** pixels, char* error,
+                              size_t error_size);
+using SnellOiioFree = void (*)(float* pixels);
+}
