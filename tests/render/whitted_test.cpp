@@ -131,6 +131,27 @@ TEST(WhittedTest, TransmitPassesBackgroundThroughClearObject) {
   EXPECT_EQ(ctx.counters.refracted, 2u);
 }
 
+TEST(WhittedTest, LayeredTextureShowsLowerLayerThroughTransmit) {
+  // POV-Ray "Layered Textures": a half-transmitting red layer over opaque blue shows half of each, and the
+  // stack is opaque (nothing behind the object shows). Ambient 1, diffuse 0: the colour is the pigment.
+  scene::Scene s;
+  material::Finish f;
+  f.ambient = Color(1);
+  f.diffuse = 0;
+  auto top = test::texture({Color(1, 0, 0), 0.0, 0.5}, f);
+  top->below = test::texture({Color(0, 0, 1)}, f);
+  s.objects.push_back(test::object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 0), 1.0), top));
+  s.background.rgb = Color(0, 1, 0);
+  const auto accel = accel::make_accelerator("none", s);
+  WhittedIntegrator w(s, *accel);
+  TraceContext ctx;
+  const Color c = w.trace_camera_ray({{0, 0, -5}, {0, 0, 1}}, ctx);
+  EXPECT_NEAR(c.r, 0.5, 1e-9);
+  EXPECT_NEAR(c.g, 0, 1e-9);
+  EXPECT_NEAR(c.b, 0.5, 1e-9);
+  EXPECT_EQ(ctx.counters.refracted, 0u);
+}
+
 TEST(WhittedTest, MaxTraceLevelStopsRecursion) {
   // Glass half-space below y=0 seen at 45°: with max_trace_level 1 only the camera ray is traced.
   scene::Scene s;

@@ -1,5 +1,8 @@
 #include "snell/material/texture.hpp"
 
+#include <algorithm>
+#include <vector>
+
 namespace snell::material {
 
 std::shared_ptr<const Texture> Texture::default_texture() {
@@ -9,6 +12,63 @@ std::shared_ptr<const Texture> Texture::default_texture() {
     return std::shared_ptr<const Texture>(t);
   }();
   return texture;
+}
+
+std::shared_ptr<const Texture> Texture::transformed(const math::Transform& t) const {
+  auto copy = std::make_shared<Texture>(*this);
+  copy->transform = t * copy->transform;
+  if (below) copy->below = below->transformed(t);
+  return copy;
+}
+
+std::shared_ptr<const Texture> Texture::layered(const std::shared_ptr<const Texture>& top,
+                                                std::shared_ptr<const Texture> bottom) {
+  if (!top) return bottom;
+  auto copy = std::make_shared<Texture>(*top);
+  copy->below = copy->below ? layered(copy->below, std::move(bottom)) : std::move(bottom);
+  return copy;
+}
+
+namespace {
+
+Rgbft layer_pigment(const Texture& layer, const math::Vec3& world_point, const math::Vec3& world_normal,
+                    const math::Vec2& uv) {
+  if (!layer.pigment) return {};
+  if (layer.pigment->is_constant()) return layer.pigment->at({});
+  PatternPoint pp;
+  pp.p = layer.transform.inverse_point(world_point);
+  pp.world_normal = world_normal;
+  pp.uv = uv;
+  return layer.pigment->at(pp);
+}
+
+}  // namespace
+
+Rgbft Texture::pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
+                          const math::Vec2& uv) const {
+  if (!below) return layer_pigment(*this, world_point, world_normal, uv);
+  // Front to back, as POV-Ray composites layers (lighting.cpp, ComputeLightedTexture): each layer adds
+  // its opaque part, weighted by what the layers above let through, and passes on its filter/transmit.
+  math::Color color(0);
+  math::Color through(1);
+  for (const Texture* layer = this; layer; layer = layer->below.get()) {
+    const Rgbft c = layer_pigment(*layer, world_point, world_normal, uv);
+    const double opaque = std::max(0.0, 1 - c.filter - c.transmit);
+    color += through * c.rgb * opaque;
+    through *= c.rgb * c.filter + math::Color(c.transmit);
+    if (std::max(through.r, std::max(through.g, through.b)) <= 0) break;
+  }
+  // Back to one colour: transmit is the untinted part of what passes, filter the tinted rest. With an
+  // opaque bottom layer (the usual case) nothing passes and this is exact; otherwise the tint of light
+  // passing through the stack is approximated by one filter amount.
+  Rgbft out;
+  out.transmit = std::clamp(std::min(through.r, std::min(through.g, through.b)), 0.0, 1.0);
+  const math::Color tinted = through - math::Color(out.transmit);
+  if (out.transmit >= 1) return out;
+  out.rgb = (color + tinted) * (1 / (1 - out.transmit));
+  const double rgb_sum = out.rgb.r + out.rgb.g + out.rgb.b;
+  out.filter = rgb_sum > 0 ? (tinted.r + tinted.g + tinted.b) / rgb_sum : 0;
+  return out;
 }
 
 }  // namespace snell::material

@@ -49,14 +49,8 @@ double max_abs(const Color& c) {
 }
 
 material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
-  const material::Texture& tex = *hit.object->texture;
-  if (!tex.pigment) return {};
-  if (tex.pigment->is_constant()) return tex.pigment->at({});
-  material::PatternPoint pp;
-  pp.p = tex.transform.inverse_point(hit.point);
-  pp.world_normal = hit.normal;
-  pp.uv = hit.uv;
-  return tex.pigment->at(pp);
+  // Layered textures composite inside Texture::pigment_at; the top layer's finish lights the result.
+  return hit.object->texture->pigment_at(hit.point, hit.normal, hit.uv);
 }
 
 }  // namespace

@@ -235,15 +235,15 @@ Value Parser::parse_rvalue() {
     }
     if (word.text == "texture") {
       raw_next();
-      Value first{parse_texture_block()};
-      // Layered textures (`texture {..} texture {..}`, POV-Ray reference "Layered Textures") are not
-      // composited yet: the bottom layer, usually the opaque one, stands for the whole stack.
-      while (peek_after_value().is_word("texture")) {
-        warn(peek().where, "layered textures are not supported yet; only the first layer is used");
-        raw_next();
-        parse_texture_block();
-      }
-      return first;
+      return Value{parse_layered_textures()};
+    }
+    if (word.text == "array") {
+      raw_next();
+      return Value{parse_array()};
+    }
+    if (word.text == "material") {
+      raw_next();
+      return Value{parse_material_block()};
     }
     if (word.text == "interior") {
       raw_next();
@@ -587,6 +587,8 @@ Numeric Parser::parse_function(const Token& name) {
       "sin",        "cos",   "tan",    "sinh",    "cosh",         "tanh",   "asin",    "acos",    "atan",
       "atan2",      "floor", "ceil",   "int",     "mod",          "div",    "radians", "degrees", "vlength",
       "vnormalize", "vdot",  "vcross", "vrotate", "vaxis_rotate", "select", "strlen",  "val",     "asc"};
+  if (f == "dimensions" || f == "dimension_size") return parse_array_function(name);
+  if (f == "seed" || f == "rand") return parse_random_function(name);
   bool known = false;
   for (const char* k : functions) known = known || f == k;
   if (!known) fail(name.where, "unknown identifier '" + f + "'");

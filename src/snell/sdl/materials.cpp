@@ -252,7 +252,8 @@ std::shared_ptr<const material::Interior> Parser::parse_interior_block() {
 std::shared_ptr<const material::Texture> Parser::parse_texture_block() {
   const NestingGuard guard(*this, peek().where);
   expect("{", "texture");
-  auto texture = std::make_shared<material::Texture>();
+  auto texture = std::make_shared<material::Texture>(*default_texture_);
+  texture->pigment = nullptr;
   for (;;) {
     const Token t = peek();
     if (t.is_symbol("}")) {
@@ -270,6 +271,8 @@ std::shared_ptr<const material::Texture> Parser::parse_texture_block() {
     }
     if (auto step = parse_transform_item()) {
       texture->transform = *step * texture->transform;
+      // A declared layered texture moves as a whole.
+      if (texture->below) texture->below = texture->below->transformed(*step);
       continue;
     }
     raw_next();
@@ -284,8 +287,55 @@ std::shared_ptr<const material::Texture> Parser::parse_texture_block() {
       fail(t.where, "unexpected '" + w + "' in texture");
     }
   }
-  if (!texture->pigment) texture->pigment = material::Texture::default_texture()->pigment;
+  if (!texture->pigment) texture->pigment = default_texture_->pigment;
   return texture;
+}
+
+std::shared_ptr<const material::Texture> Parser::parse_layered_textures() {
+  auto texture = parse_texture_block();
+  // `texture {A} texture {B}`: B lies on top of A (POV-Ray 3.7 reference, "Layered Textures").
+  while (peek_after_value().is_word("texture")) {
+    raw_next();
+    texture = material::Texture::layered(parse_texture_block(), texture);
+  }
+  return texture;
+}
+
+std::shared_ptr<const material::Material> Parser::parse_material_block() {
+  expect("{", "material");
+  auto material = std::make_shared<material::Material>();
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      return material;
+    }
+    if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in material");
+    const std::string& w = t.text;
+    if (const Value* v = lookup(w)) {
+      if (const auto* other = std::get_if<std::shared_ptr<const material::Material>>(&v->data)) {
+        *material = **other;
+        raw_next();
+        continue;
+      }
+    }
+    if (auto step = parse_transform_item()) {
+      // Material transforms move its texture (an interior has no pattern to move).
+      if (material->texture) material->texture = material->texture->transformed(*step);
+      continue;
+    }
+    raw_next();
+    if (w == "texture") {
+      material->texture = material::Texture::layered(parse_texture_block(), material->texture);
+    } else if (w == "interior") {
+      material->interior = parse_interior_block();
+    } else if (w == "interior_texture") {
+      warn(t.where, "interior_texture is not supported yet; ignored");
+      skip_block(w);
+    } else {
+      fail(t.where, "unexpected '" + w + "' in material");
+    }
+  }
 }
 
 }  // namespace snell::sdl

@@ -480,8 +480,7 @@ void Parser::parse_clip_block(ParsedObject& o, const Token& keyword) {
 }
 
 void Parser::attach_pigment(ParsedObject& o, std::shared_ptr<const material::Pigment> pigment) {
-  auto texture =
-      o.texture ? std::make_shared<material::Texture>(*o.texture) : std::make_shared<material::Texture>();
+  auto texture = std::make_shared<material::Texture>(o.texture ? *o.texture : *default_texture_);
   texture->pigment = std::move(pigment);
   o.texture = std::move(texture);
 }
@@ -503,9 +502,8 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
   const std::string& w = t.text;
   raw_next();
   auto ensure_texture = [&] {
-    auto texture =
-        o.texture ? std::make_shared<material::Texture>(*o.texture) : std::make_shared<material::Texture>();
-    if (!texture->pigment) texture->pigment = material::Texture::default_texture()->pigment;
+    auto texture = std::make_shared<material::Texture>(o.texture ? *o.texture : *default_texture_);
+    if (!texture->pigment) texture->pigment = default_texture_->pigment;
     return texture;
   };
   if (w == "pigment") {
@@ -516,8 +514,13 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
     texture->finish = parse_finish_block(texture->finish);
     o.texture = std::move(texture);
   } else if (w == "texture") {
-    // The texture starts in the object's current space: later object transforms move it too.
-    o.texture = parse_texture_block();
+    // The texture starts in the object's current space: later object transforms move it too. A texture
+    // on an object that has one goes on top of it as a new layer, as in POV-Ray (Link_Textures).
+    o.texture = material::Texture::layered(parse_texture_block(), o.texture);
+  } else if (w == "material") {
+    const auto m = parse_material_block();
+    if (m->texture) o.texture = material::Texture::layered(m->texture, o.texture);
+    if (m->interior) o.interior = m->interior;
   } else if (w == "interior") {
     o.interior = parse_interior_block();
   } else if (w == "normal") {

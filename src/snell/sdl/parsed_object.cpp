@@ -6,11 +6,7 @@ namespace snell::sdl {
 
 void ParsedObject::apply(const math::Transform& t) {
   transform = t * transform;
-  if (texture) {
-    auto moved = std::make_shared<material::Texture>(*texture);
-    moved->transform = t * moved->transform;
-    texture = std::move(moved);
-  }
+  if (texture) texture = texture->transformed(t);
 }
 
 namespace {
@@ -49,9 +45,7 @@ Inherited resolve(const ParsedObject& o, const Inherited& parent) {
     if (parent.to_world.is_identity()) {
       r.texture = o.texture;
     } else {
-      auto placed = std::make_shared<material::Texture>(*o.texture);
-      placed->transform = parent.to_world * placed->transform;
-      r.texture = std::move(placed);
+      r.texture = o.texture->transformed(parent.to_world);
     }
   }
   r.interior = o.interior ? o.interior : parent.interior;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "snell/math/pcg32.hpp"
 #include "snell/sdl/diagnostics.hpp"
 #include "snell/sdl/parse.hpp"
 #include "snell/sdl/value.hpp"
@@ -35,14 +36,23 @@ class Parser {
     std::filesystem::path folder;  // for #include search
     scene::SourceLocation call_site;
     double saved_version = 0;
+    /// A token read ahead of `pos` (an evaluated array element), returned before the stream's next one.
+    std::optional<Token> injected;
   };
   struct Cond {
-    enum class Kind { if_, while_, switch_, macro_call };
+    enum class Kind { if_, while_, switch_, macro_call, for_ };
     Kind kind = Kind::if_;
     size_t frame = 0;
     size_t resume_pos = 0;  // #while: the condition's first token
     long iterations = 0;
     scene::SourceLocation where;
+  };
+
+  /// The state of a running `#for`, one per Cond::Kind::for_ on conds_.
+  struct ForLoop {
+    std::string variable;
+    double end = 0;
+    double step = 1;
   };
 
   void push_file(const std::filesystem::path& path, Frame::Kind kind, const scene::SourceLocation& site);
@@ -63,6 +73,10 @@ class Parser {
   void directive_else(const Token& directive);
   void directive_end(const Token& directive);
   void directive_while(const Token& directive);
+  /// `#for (I, start, end [, step])`: a counted loop (POV-Ray 3.7 reference, "The #for Directive").
+  void directive_for(const Token& directive);
+  /// `#default { texture {..} | pigment {..} | finish {..} }`.
+  void directive_default(const Token& directive);
   void directive_switch(const Token& directive);
   void directive_macro(const Token& directive);
   void directive_include(const Token& directive);
@@ -74,6 +88,19 @@ class Parser {
   /// Skips a `{ ... }` block whose `{` is next.
   void skip_block(const std::string& what);
   void check_frame_end();
+
+  // ---- arrays (arrays.cpp) ----
+  /// `array[d1][d2]... [{ items }]` after `array`.
+  std::shared_ptr<Array> parse_array();
+  /// `[i][j]...` after an array's name: the flat index of that element, range-checked.
+  size_t parse_array_index(const Array& array, const Token& name);
+  /// Replaces `Name[i]...` (its name just read) with a token naming the element's value, so that every
+  /// place that accepts an identifier accepts an element too.
+  void inject_array_element(const Array& array, const Token& name);
+  /// `Name[i]...` after `#ifdef (`: whether that element has been given a value.
+  bool array_element_is_set(const Token& name);
+  /// `#declare Name[i]... = value`.
+  void declare_array_element(const Token& name, bool local);
 
   // ---- symbols ----
   const Value* lookup(const std::string& name) const;
@@ -113,6 +140,10 @@ class Parser {
   Numeric parse_primary();
   Numeric parse_color_keywords();
   Numeric parse_function(const Token& name);
+  /// `dimensions(A)`, `dimension_size(A, n)` (arrays.cpp).
+  Numeric parse_array_function(const Token& name);
+  /// `seed(n)`, `rand(stream)` (random.cpp).
+  Numeric parse_random_function(const Token& name);
   void expect(const char* symbol, const char* context);
   Token expect_identifier(const char* context);
   bool accept(const char* symbol);
@@ -129,6 +160,9 @@ class Parser {
   material::Finish parse_finish_block(const material::Finish& base);
   std::shared_ptr<const material::Interior> parse_interior_block();
   std::shared_ptr<const material::Texture> parse_texture_block();
+  /// One texture block and any `texture {..}` blocks after it, layered (the last on top).
+  std::shared_ptr<const material::Texture> parse_layered_textures();
+  std::shared_ptr<const material::Material> parse_material_block();
   void parse_reflection(material::Finish& finish);
   /// `translate v`, `rotate v`, `scale v`, `matrix <..>`, `transform {..}` when one is next.
   std::optional<math::Transform> parse_transform_item();
@@ -174,6 +208,12 @@ class Parser {
   std::map<std::string, std::shared_ptr<const std::vector<Token>>> token_cache_;
   std::vector<Frame> frames_;
   std::vector<Cond> conds_;
+  std::vector<ForLoop> for_loops_;
+  /// Values of array elements read through inject_array_element, under names no identifier can have.
+  std::map<std::string, Value> element_values_;
+  unsigned element_counter_ = 0;
+  /// `seed(n)` streams, indexed by the float `seed` returns.
+  std::vector<math::Pcg32> random_streams_;
   std::vector<std::map<std::string, Value>> scopes_;
   int macro_depth_ = 0;
   /// Depth of recursive descent (expressions, objects, pigments, textures): hostile input such as 100000
@@ -199,6 +239,8 @@ class Parser {
   bool in_vector_ = false;
   bool assumed_gamma_seen_ = false;
   scene::Scene scene_;
+  /// What `#default {}` has made of POV-Ray's default texture; objects parsed later start from it.
+  std::shared_ptr<const material::Texture> default_texture_ = material::Texture::default_texture();
 };
 
 }  // namespace snell::sdl

@@ -48,6 +48,10 @@ void Parser::parse_scene_items() {
       parse_background();
       continue;
     }
+    if (t.text == "default") {  // the pre-3.0 spelling of #default, which POV-Ray 3.7 still reads
+      directive_default(raw_next());
+      continue;
+    }
     if (t.text == "global_settings") {
       raw_next();
       parse_global_settings();
@@ -65,6 +69,7 @@ void Parser::parse_scene_items() {
       continue;
     }
     if (auto object = parse_object_if_any()) {
+      if (!object->texture) object->texture = default_texture_;  // `#default {}` in force now
       flatten(*object, scene_.objects, scene_.lights);
       continue;
     }

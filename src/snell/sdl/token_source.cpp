@@ -66,6 +66,7 @@ void Parser::check_frame_end() {
 }
 
 const Token& Parser::raw_peek() {
+  if (frames_.back().injected) return *frames_.back().injected;
   for (;;) {
     Frame& f = frames_.back();
     const Token& t = (*f.tokens)[f.pos];
@@ -79,6 +80,11 @@ const Token& Parser::raw_peek() {
 }
 
 Token Parser::raw_next() {
+  if (auto& injected = frames_.back().injected) {
+    Token t = std::move(*injected);
+    injected.reset();
+    return t;
+  }
   const Token t = raw_peek();
   Frame& f = frames_.back();
   if (t.kind != Token::Kind::end) ++f.pos;
@@ -100,6 +106,15 @@ const Token& Parser::peek() {
           const Token name = raw_next();
           invoke_macro(name, macro);
           continue;
+        }
+        if (const auto* array = std::get_if<std::shared_ptr<Array>>(&v->data)) {
+          const Frame& f = frames_.back();
+          if (!f.injected && f.pos + 1 < f.tokens->size() && (*f.tokens)[f.pos + 1].is_symbol("[")) {
+            const auto held = *array;
+            const Token name = raw_next();
+            inject_array_element(*held, name);
+            continue;
+          }
         }
       }
     }
@@ -178,8 +193,9 @@ void Parser::handle_directive(const Token& d) {
     expect("(", "#ifdef");
     const Token name = raw_next();
     if (name.kind != Token::Kind::identifier) fail(name.where, "expected an identifier in #" + n);
+    bool defined = lookup(name.text) != nullptr;
+    if (raw_peek().is_symbol("[")) defined = array_element_is_set(name);  // `#ifdef (A[i])`
     expect(")", "#ifdef");
-    const bool defined = lookup(name.text) != nullptr;
     return directive_if(d, n == "ifdef" ? defined : !defined);
   }
   if (n == "else" || n == "elseif") return directive_else(d);
@@ -216,11 +232,8 @@ void Parser::handle_directive(const Token& d) {
       message(text);
     return;
   }
-  if (n == "default") {
-    warn(d.where, "#default is not supported yet; ignored");
-    skip_block("#default");
-    return;
-  }
+  if (n == "default") return directive_default(d);
+  if (n == "for") return directive_for(d);
   fail(d.where, "unknown directive #" + n);
 }
 
@@ -238,9 +251,13 @@ void Parser::directive_declare(const Token& d, bool local) {
                                          "no", "version", "clock", "image_width", "image_height"};
   for (const char* r : reserved)
     if (name.text == r) fail(name.where, "'" + name.text + "' is a reserved word and cannot be declared");
+  if (raw_peek().is_symbol("[")) return declare_array_element(name, local);
   const Token eq = raw_next();
   if (!eq.is_symbol("=")) fail(eq.where, "expected '=' after #" + d.text + " " + name.text);
   Value value = parse_rvalue();
+  // Arrays are values: `#declare B = A` copies, so later element assignments to one leave the other.
+  if (auto* array = std::get_if<std::shared_ptr<Array>>(&value.data))
+    *array = std::make_shared<Array>(**array);
   if (auto* object = std::get_if<ParsedObject>(&value.data); object && object->name.empty())
     object->name = name.text;
   declare(name.text, std::move(value), local);
@@ -295,7 +312,79 @@ void Parser::directive_end(const Token& d) {
       skip_to({"end"}, start);
       return;
     }
+    case Cond::Kind::for_: {
+      if (++c.iterations >= options_.max_while_iterations)
+        fail(c.where, "#for loop ran more than " + std::to_string(options_.max_while_iterations) +
+                          " iterations (ParseOptions::max_while_iterations)");
+      const ForLoop& loop = for_loops_.back();
+      // The body may change the counter; POV-Ray steps from its current value.
+      const Value* counter = lookup(loop.variable);
+      const auto* n = counter ? std::get_if<Numeric>(&counter->data) : nullptr;
+      if (!n) fail(c.where, "#for counter '" + loop.variable + "' is no longer a number");
+      const double next = n->x() + loop.step;
+      if (loop.step > 0 ? next <= loop.end : next >= loop.end) {
+        declare(loop.variable, Value{Numeric::of(next)}, macro_depth_ > 0);
+        frames_.back().pos = c.resume_pos;
+        return;
+      }
+      conds_.pop_back();
+      for_loops_.pop_back();
+      return;
+    }
   }
+}
+
+void Parser::directive_for(const Token& d) {
+  expect("(", "#for");
+  const Token name = raw_next();
+  if (name.kind != Token::Kind::identifier) fail(name.where, "expected the counter's name in #for");
+  expect(",", "#for");
+  const double start = parse_float();
+  expect(",", "#for");
+  const double end = parse_float();
+  double step = 1;
+  if (accept(",")) step = parse_float();
+  expect(")", "#for");
+  if (step == 0) fail(d.where, "#for step is zero: the loop would never end");
+  // The counter is set even when the body never runs (POV-Ray leaves it at the start value).
+  declare(name.text, Value{Numeric::of(start)}, macro_depth_ > 0);
+  if (step > 0 ? start > end : start < end) {
+    skip_to({"end"}, d);
+    return;
+  }
+  conds_.push_back({Cond::Kind::for_, frames_.size() - 1, frames_.back().pos, 0, d.where});
+  for_loops_.push_back({name.text, end, step});
+}
+
+void Parser::directive_default(const Token& d) {
+  expect("{", "#default");
+  for (;;) {
+    const Token t = peek();
+    if (t.is_symbol("}")) {
+      raw_next();
+      return;
+    }
+    raw_next();
+    if (t.is_word("texture")) {
+      auto texture = std::make_shared<material::Texture>(*parse_texture_block());
+      texture->below = nullptr;
+      default_texture_ = std::move(texture);
+    } else if (t.is_word("pigment")) {
+      auto texture = std::make_shared<material::Texture>(*default_texture_);
+      texture->pigment = parse_pigment_block(texture->pigment);
+      default_texture_ = std::move(texture);
+    } else if (t.is_word("finish")) {
+      auto texture = std::make_shared<material::Texture>(*default_texture_);
+      texture->finish = parse_finish_block(texture->finish);
+      default_texture_ = std::move(texture);
+    } else if (t.is_word("normal")) {
+      warn(t.where, "normal is not supported yet; ignored");
+      skip_block("normal");
+    } else {
+      fail(t.where, "unexpected '" + t.text + "' in #default (expected texture, pigment, finish or normal)");
+    }
+  }
+  (void)d;
 }
 
 void Parser::directive_while(const Token& d) {
@@ -420,6 +509,10 @@ void Parser::directive_include(const Token& d) {
 }
 
 const Value* Parser::lookup(const std::string& name) const {
+  if (!name.empty() && name[0] == '[') {
+    const auto found = element_values_.find(name);
+    return found == element_values_.end() ? nullptr : &found->second;
+  }
   for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
     if (const auto found = it->find(name); found != it->end()) return &found->second;
   return nullptr;

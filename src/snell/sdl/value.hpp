@@ -3,12 +3,14 @@
 // stores finished values: numbers, colours, strings, transforms, materials, objects and macros.
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "snell/function/function.hpp"
 #include "snell/material/interior.hpp"
+#include "snell/material/material.hpp"
 #include "snell/material/pigment.hpp"
 #include "snell/material/texture.hpp"
 #include "snell/scene/camera.hpp"
@@ -40,22 +42,32 @@ struct Macro {
   scene::SourceLocation where;
 };
 
+struct Array;
+
 struct Value {
   std::variant<Numeric, std::string, math::Transform, std::shared_ptr<const material::Pigment>,
                std::shared_ptr<const material::Texture>, material::Finish,
                std::shared_ptr<const material::Interior>, ParsedObject, std::shared_ptr<const Macro>,
                scene::CameraSpec, std::shared_ptr<const texture::ColorMap>,
-               std::shared_ptr<const texture::PigmentMap>, std::shared_ptr<const function::Function>>
+               std::shared_ptr<const texture::PigmentMap>, std::shared_ptr<const function::Function>,
+               std::shared_ptr<const material::Material>, std::shared_ptr<Array>>
       data;
 
   const char* type_name() const {
     static const char* names[] = {"number",    "string",      "transform", "pigment", "texture",
                                   "finish",    "interior",    "object",    "macro",   "camera",
-                                  "color_map", "pigment_map", "function"};
+                                  "color_map", "pigment_map", "function", "material", "array"};
     if (const auto* n = std::get_if<Numeric>(&data))
       return n->color ? "color" : (n->size == 1 ? "float" : "vector");
     return names[data.index()];
   }
+};
+
+/// `array[d1][d2]... [{ items }]` (POV-Ray 3.7 reference, "Array Identifiers"): elements in row-major
+/// order; an element never assigned is empty, and reading it is an error.
+struct Array {
+  std::vector<int> sizes;
+  std::vector<std::optional<Value>> items;
 };
 
 }  // namespace snell::sdl
