@@ -1,6 +1,5 @@
 // Runs the `snell` binary: each bad command line gives one clear error line and a non-zero exit code.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -8,23 +7,15 @@
 #include <memory>
 #include <string>
 
+#include "run_command.hpp"
+
+namespace snell {
 namespace {
 
-struct Outcome {
-  int code = -1;
-  std::string output;
-};
+using test::Outcome;
 
 Outcome run(const std::string& args) {
-  Outcome r;
-  const std::string command = std::string(SNELL_BINARY) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::run_command(std::string(SNELL_BINARY) + " " + args);
 }
 
 size_t lines(const std::string& s) {
@@ -90,3 +81,4 @@ TEST(CliTest, UnknownPovFlagIsOnlyAWarning) {
 }
 
 }  // namespace
+}  // namespace snell

@@ -1,34 +1,25 @@
 // Scene errors reach the user as one `file:line:col: error:` line, the source line and a caret, with exit
 // code 1 (DESIGN.md, "Errors"; docs/cli.md, exit codes).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "run_command.hpp"
+
+namespace snell {
 namespace {
 
-struct Outcome {
-  int code = -1;
-  std::string output;
-};
+using test::Outcome;
 
 Outcome render_scene(const std::string& name, const std::string& text) {
   const auto dir = std::filesystem::temp_directory_path();
   const auto scene = dir / (name + ".pov");
   std::ofstream(scene) << text;
-  const std::string command = std::string(SNELL_BINARY) + " +I" + scene.string() + " +O" +
-                              (dir / (name + ".png")).string() + " +W16 +H12 -D --quiet 2>&1";
-  Outcome r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::run_command(std::string(SNELL_BINARY) + " +I" + scene.string() + " +O" +
+                           (dir / (name + ".png")).string() + " +W16 +H12 -D --quiet");
 }
 
 /// The first line names file:line:col and says "error:"; a caret line follows.
@@ -66,3 +57,4 @@ TEST(SceneErrorTest, NoImageIsWrittenOnError) {
 }
 
 }  // namespace
+}  // namespace snell

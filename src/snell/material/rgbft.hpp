@@ -15,4 +15,10 @@ struct Rgbft {
   constexpr bool is_transparent() const { return filter > 0 || transmit > 0; }
 };
 
+/// Linear blend of all five channels, as colour and pigment maps interpolate their entries.
+inline Rgbft lerp(const Rgbft& a, const Rgbft& b, double t) {
+  return {math::lerp(a.rgb, b.rgb, t), a.filter + (b.filter - a.filter) * t,
+          a.transmit + (b.transmit - a.transmit) * t};
+}
+
 }  // namespace snell::material

@@ -5,13 +5,6 @@
 
 namespace snell::texture {
 
-namespace {
-material::Rgbft mix(const material::Rgbft& a, const material::Rgbft& b, double t) {
-  return {math::lerp(a.rgb, b.rgb, t), a.filter + (b.filter - a.filter) * t,
-          a.transmit + (b.transmit - a.transmit) * t};
-}
-}  // namespace
-
 ColorMap::ColorMap(std::vector<Entry> entries) : entries_(std::move(entries)) {
   if (entries_.empty()) throw std::invalid_argument("a color_map needs at least one entry");
   std::stable_sort(entries_.begin(), entries_.end(),
@@ -31,7 +24,7 @@ material::Rgbft ColorMap::at(double value) const {
   const auto lower = upper - 1;
   const double span = upper->first - lower->first;
   if (span <= 0) return upper->second;
-  return mix(lower->second, upper->second, (value - lower->first) / span);
+  return material::lerp(lower->second, upper->second, (value - lower->first) / span);
 }
 
 }  // namespace snell::texture

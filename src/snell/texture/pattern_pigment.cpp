@@ -5,15 +5,6 @@
 
 namespace snell::texture {
 
-namespace {
-
-material::Rgbft mix(const material::Rgbft& a, const material::Rgbft& b, double t) {
-  return {math::lerp(a.rgb, b.rgb, t), a.filter + (b.filter - a.filter) * t,
-          a.transmit + (b.transmit - a.transmit) * t};
-}
-
-}  // namespace
-
 PigmentMap::PigmentMap(std::vector<Entry> entries) : entries_(std::move(entries)) {
   if (entries_.empty()) throw std::invalid_argument("a pigment_map needs at least one entry");
   for (const auto& e : entries_)
@@ -31,7 +22,7 @@ material::Rgbft PigmentMap::at(double value, const material::PatternPoint& point
   const double span = upper->first - lower->first;
   if (span <= 0) return upper->second->at(point);
   const double t = (value - lower->first) / span;
-  return mix(lower->second->at(point), upper->second->at(point), t);
+  return material::lerp(lower->second->at(point), upper->second->at(point), t);
 }
 
 PatternPigment::PatternPigment(PatternSpec spec) : spec_(std::move(spec)) {
