@@ -159,12 +159,9 @@ material::Finish Parser::parse_finish_block(const material::Finish& base) {
     }
     if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in finish");
     const std::string& w = t.text;
-    if (const Value* v = lookup(w)) {
-      if (const auto* other = std::get_if<material::Finish>(&v->data)) {
-        f = *other;
-        raw_next();
-        continue;
-      }
+    if (auto declared = take_declared<material::Finish>()) {
+      f = *declared;
+      continue;
     }
     raw_next();
     if (w == "ambient") {
@@ -218,12 +215,9 @@ std::shared_ptr<const material::Interior> Parser::parse_interior_block() {
     }
     if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in interior");
     const std::string& w = t.text;
-    if (const Value* v = lookup(w)) {
-      if (const auto* other = std::get_if<std::shared_ptr<const material::Interior>>(&v->data)) {
-        *interior = **other;
-        raw_next();
-        continue;
-      }
+    if (auto declared = take_declared<std::shared_ptr<const material::Interior>>()) {
+      *interior = **declared;
+      continue;
     }
     raw_next();
     if (w == "ior")
@@ -262,12 +256,9 @@ std::shared_ptr<const material::Texture> Parser::parse_texture_block() {
     }
     if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in texture");
     const std::string& w = t.text;
-    if (const Value* v = lookup(w)) {
-      if (const auto* other = std::get_if<std::shared_ptr<const material::Texture>>(&v->data)) {
-        *texture = **other;
-        raw_next();
-        continue;
-      }
+    if (auto declared = take_declared<std::shared_ptr<const material::Texture>>()) {
+      *texture = **declared;
+      continue;
     }
     if (auto step = parse_transform_item()) {
       texture->transform = *step * texture->transform;
@@ -312,12 +303,9 @@ std::shared_ptr<const material::Material> Parser::parse_material_block() {
     }
     if (t.kind != Token::Kind::identifier) fail(t.where, "unexpected '" + t.text + "' in material");
     const std::string& w = t.text;
-    if (const Value* v = lookup(w)) {
-      if (const auto* other = std::get_if<std::shared_ptr<const material::Material>>(&v->data)) {
-        *material = **other;
-        raw_next();
-        continue;
-      }
+    if (auto declared = take_declared<std::shared_ptr<const material::Material>>()) {
+      *material = **declared;
+      continue;
     }
     if (auto step = parse_transform_item()) {
       // Material transforms move its texture (an interior has no pattern to move).

@@ -104,6 +104,18 @@ class Parser {
 
   // ---- symbols ----
   const Value* lookup(const std::string& name) const;
+  /// When the next token names a declared value of type T, consumes it and returns a copy; else nullopt.
+  template <typename T>
+  std::optional<T> take_declared() {
+    const Token& t = peek();
+    if (t.kind != Token::Kind::identifier) return std::nullopt;
+    const Value* v = lookup(t.text);
+    const T* value = v ? std::get_if<T>(&v->data) : nullptr;
+    if (!value) return std::nullopt;
+    T copy = *value;
+    raw_next();
+    return copy;
+  }
   void declare(const std::string& name, Value value, bool local);
 
   // ---- diagnostics ----

@@ -383,15 +383,7 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
 
 std::shared_ptr<const texture::ColorMap> Parser::parse_color_map() {
   // `color_map Ident` (old form) or `color_map { [Ident] entries }`.
-  if (peek().kind == Token::Kind::identifier) {
-    if (const Value* v = lookup(peek().text)) {
-      if (const auto* m = std::get_if<std::shared_ptr<const texture::ColorMap>>(&v->data)) {
-        const auto copy = *m;
-        raw_next();
-        return copy;
-      }
-    }
-  }
+  if (auto declared = take_declared<std::shared_ptr<const texture::ColorMap>>()) return *declared;
   const scene::SourceLocation where = peek().where;
   expect("{", "color_map");
   std::vector<texture::ColorMap::Entry> entries;
@@ -401,14 +393,9 @@ std::shared_ptr<const texture::ColorMap> Parser::parse_color_map() {
       raw_next();
       break;
     }
-    if (t.kind == Token::Kind::identifier) {
-      if (const Value* v = lookup(t.text)) {
-        if (const auto* m = std::get_if<std::shared_ptr<const texture::ColorMap>>(&v->data)) {
-          entries = (*m)->entries();
-          raw_next();
-          continue;
-        }
-      }
+    if (auto declared = take_declared<std::shared_ptr<const texture::ColorMap>>()) {
+      entries = (*declared)->entries();
+      continue;
     }
     if (!t.is_symbol("[")) fail(t.where, "expected '[' or '}' in color_map, found '" + t.text + "'");
     raw_next();
@@ -438,15 +425,7 @@ std::shared_ptr<const texture::ColorMap> Parser::parse_color_map() {
 }
 
 std::shared_ptr<const texture::PigmentMap> Parser::parse_pigment_map() {
-  if (peek().kind == Token::Kind::identifier) {
-    if (const Value* v = lookup(peek().text)) {
-      if (const auto* m = std::get_if<std::shared_ptr<const texture::PigmentMap>>(&v->data)) {
-        const auto copy = *m;
-        raw_next();
-        return copy;
-      }
-    }
-  }
+  if (auto declared = take_declared<std::shared_ptr<const texture::PigmentMap>>()) return *declared;
   const scene::SourceLocation where = peek().where;
   expect("{", "pigment_map");
   std::vector<texture::PigmentMap::Entry> entries;
@@ -456,14 +435,9 @@ std::shared_ptr<const texture::PigmentMap> Parser::parse_pigment_map() {
       raw_next();
       break;
     }
-    if (t.kind == Token::Kind::identifier) {
-      if (const Value* v = lookup(t.text)) {
-        if (const auto* m = std::get_if<std::shared_ptr<const texture::PigmentMap>>(&v->data)) {
-          entries = (*m)->entries();
-          raw_next();
-          continue;
-        }
-      }
+    if (auto declared = take_declared<std::shared_ptr<const texture::PigmentMap>>()) {
+      entries = (*declared)->entries();
+      continue;
     }
     if (!t.is_symbol("[")) fail(t.where, "expected '[' or '}' in pigment_map, found '" + t.text + "'");
     raw_next();
