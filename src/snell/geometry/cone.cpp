@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "snell/geometry/axial_caps.hpp"
 #include "snell/geometry/polynomial.hpp"
 
 namespace snell::geometry {
@@ -59,21 +60,7 @@ void Cone::gather(const Ray& ray, HitBuffer<4>& hits) const {
       if (t0 == t1) break;
     }
   }
-  if (open_ || d.z == 0) return;
-  for (int end = 0; end < 2; ++end) {
-    const double r = end == 0 ? base_radius_ : cap_radius_;
-    if (r == 0) continue;  // pointed end: no cap
-    const double t = ((end == 0 ? 0.0 : length_) - o.z) / d.z;
-    if (!hits.accepts(t)) continue;
-    const Vec3 p = o + t * d;
-    if (p.x * p.x + p.y * p.y > r * r) continue;
-    LocalHit h;
-    h.t = t;
-    h.normal = end == 0 ? -w_ : w_;
-    h.uv = {0.5 + 0.5 * p.x / r, 0.5 + 0.5 * p.y / r};
-    h.part = 1 + end;
-    hits.add(h);
-  }
+  if (!open_) add_end_caps(o, d, length_, base_radius_, cap_radius_, w_, hits);
 }
 
 bool Cone::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "snell/geometry/axial_caps.hpp"
 #include "snell/geometry/polynomial.hpp"
 
 namespace snell::geometry {
@@ -52,19 +53,7 @@ void Cylinder::gather(const Ray& ray, HitBuffer<4>& hits) const {
       if (t0 == t1) break;
     }
   }
-  if (open_ || d.z == 0) return;
-  for (int end = 0; end < 2; ++end) {
-    const double t = ((end == 0 ? 0.0 : length_) - o.z) / d.z;
-    if (!hits.accepts(t)) continue;
-    const Vec3 p = o + t * d;
-    if (p.x * p.x + p.y * p.y > r2) continue;
-    LocalHit h;
-    h.t = t;
-    h.normal = end == 0 ? -w_ : w_;
-    h.uv = {0.5 + 0.5 * p.x / radius_, 0.5 + 0.5 * p.y / radius_};
-    h.part = 1 + end;
-    hits.add(h);
-  }
+  if (!open_) add_end_caps(o, d, length_, radius_, radius_, w_, hits);
 }
 
 bool Cylinder::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
