@@ -9,12 +9,16 @@
 #include <cstdio>
 #include <memory>
 
+#include "cli/checkpoint.hpp"
+#include "cli/merge_command.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
+#include "cli/render_fingerprint.hpp"
 #include "snell/accel/accelerator.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
 #include "snell/render/renderer.hpp"
+#include "snell/render/resume_file.hpp"
 #include "snell/sdl/parse.hpp"
 
 namespace snell::cli {
@@ -23,8 +27,24 @@ namespace {
 
 std::atomic<bool> g_interrupted{false};
 
-extern "C" void on_sigint(int) {
-  g_interrupted.store(true);
+// The first SIGINT/SIGTERM lets running tiles finish and the partial image and resume file be written; a
+// second one ends the process at once. Files are only ever renamed into place, so none is left broken.
+extern "C" void on_stop_signal(int) {
+  if (g_interrupted.exchange(true)) _exit(130);
+}
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+std::filesystem::path resume_path(const std::filesystem::path& output) {
+  std::filesystem::path p = output;
+  p += ".snell-resume";
+  return p;
 }
 
 using Clock = std::chrono::steady_clock;
@@ -37,6 +57,8 @@ const char* kPovHelp =
     "  snell +Iscene.pov [+Oout.png] [+W640] [+H480] [+A[0.3]] [+R3] [+J[1.0]] [+Ldir] [+WTn]\n"
     "        [+FN|+FN16|+FE|+FH] [-D] [Declare=NAME=value] [--quiet] [--stats] [--accel NAME]\n"
     "  snell --parse-only scene.pov   parses and builds the scene, prints a summary\n"
+    "  +SR/+ER/+SC/+EC partial render, +C continue an interrupted one, --checkpoint S\n"
+    "  snell merge part1.exr part2.exr -o out.png   joins partial renders\n"
     "  -A / -J turn anti-aliasing / jitter off. Unknown or unsupported flags are warned about, never fatal.\n"
     "Exit codes: 0 ok, 1 scene error, 2 bad command line, 3 output error, 130 interrupted.\n";
 
@@ -63,7 +85,17 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   render->add_flag("--quiet", o.quiet, "no progress, warnings or statistics");
   render->add_flag("--stats", o.stats, "print statistics even with --quiet");
-  render->add_flag("--parse-only", o.parse_only, "parse and build the scene, print a summary, render nothing");
+  render->add_flag("--parse-only", o.parse_only,
+                   "parse and build the scene, print a summary, render nothing");
+  render->add_option("--start-row", o.start_row,
+                     "partial render: first row (1-based, or a fraction like 0.5)");
+  render->add_option("--end-row", o.end_row, "partial render: last row (inclusive, or a fraction)");
+  render->add_option("--start-col", o.start_col, "partial render: first column (1-based, or a fraction)");
+  render->add_option("--end-col", o.end_col, "partial render: last column (inclusive, or a fraction)");
+  render->add_flag("-c,--continue", o.resume,
+                   "finish an interrupted render from its resume file (POV-Ray +C)");
+  render->add_option("--checkpoint", o.checkpoint_seconds,
+                     "write the resume file every S seconds while rendering");
   return app;
 }
 
@@ -78,6 +110,8 @@ std::unique_ptr<accel::Accelerator> build_accelerator(const std::string& name, c
 
 int render(CliOptions& o) {
   validate(o);
+  const PixelBounds bounds = render_region(o);
+  install_stop_handlers();
   if (!o.quiet)
     for (const std::string& w : o.warnings) fmt::print(stderr, "snell: warning: {}\n", w);
 
@@ -93,11 +127,15 @@ int render(CliOptions& o) {
   const scene::Scene scene = sdl::parse_scene_file(o.input, po);
   const double parse_s = seconds_since(t_parse);
   if (o.parse_only) {
-    fmt::print("snell: parsed {}: {} objects, {} lights, parse {:.3f}s\n", o.input.string(), scene.objects.size(),
-               scene.lights.size(), parse_s);
+    fmt::print("snell: parsed {}: {} objects, {} lights, parse {:.3f}s\n", o.input.string(),
+               scene.objects.size(), scene.lights.size(), parse_s);
     return kOk;
   }
 
+  if (g_interrupted) {
+    fmt::print(stderr, "snell: interrupted before rendering; nothing written\n");
+    return kInterrupted;
+  }
   const auto t_build = Clock::now();
   const auto accelerator = build_accelerator(o.accel, scene);
   const double build_s = seconds_since(t_build);
@@ -111,13 +149,36 @@ int render(CliOptions& o) {
   ro.jitter = o.jitter;
   ro.jitter_amount = o.jitter_amount;
   ro.threads = o.threads;
+  ro.region = {bounds.x0, bounds.y0, bounds.x1, bounds.y1};
   ro.cancel = &g_interrupted;
   Progress progress(!o.quiet);
   ro.progress = [&progress](double f) { progress.update(f); };
 
-  std::signal(SIGINT, on_sigint);
+  const uint64_t fingerprint = render_fingerprint(o, bounds);
+  io::Image image(o.width, o.height);
+  image.clear_alpha();
+  std::vector<render::Tile> resumed;
+  if (o.resume) {
+    if (std::filesystem::exists(resume_path(o.output))) {
+      render::ResumeData data =
+          render::read_resume_file(resume_path(o.output), fingerprint, o.width, o.height);
+      image = std::move(data.image);
+      resumed = std::move(data.tiles);
+      if (!o.quiet) fmt::print(stderr, "snell: continuing: {} tiles already rendered\n", resumed.size());
+    } else if (!o.quiet) {
+      fmt::print(stderr, "snell: warning: no resume file {}; rendering from the start\n",
+                 resume_path(o.output).string());
+    }
+  }
+  std::vector<bool> skip(static_cast<size_t>(render::tiles_across(o.width)) * render::tiles_down(o.height));
+  for (const render::Tile& t : resumed) skip[static_cast<size_t>(t.index)] = true;
+  Checkpoint checkpoint(resume_path(o.output), fingerprint, image, resumed, o.checkpoint_seconds);
+  ro.skip_tile = [&skip](const render::Tile& t) { return skip[static_cast<size_t>(t.index)]; };
+  ro.tile_done = [&checkpoint](const render::Tile& t, const io::Image&) { checkpoint.tile_done(t); };
+  const render::Renderer renderer(scene, *accelerator, ro);
+
   const auto t_render = Clock::now();
-  const render::RenderResult result = render::Renderer(scene, *accelerator, ro).render();
+  const render::RenderStats result = renderer.render_into(image);
   const double render_s = seconds_since(t_render);
   progress.finish(render_s);
 
@@ -126,7 +187,13 @@ int render(CliOptions& o) {
   wo.bits = o.bits;
   wo.encoding.assumed_gamma = scene.effective_assumed_gamma();
   wo.encoding.passthrough = scene.settings.assumed_gamma <= 0 && scene.settings.language_version < 3.7;
-  io::write_image(o.output, result.image, wo);
+  // Unrendered pixels (a partial or interrupted render) stay transparent; a full image is written as RGB.
+  image.drop_alpha_if_covered();
+  io::write_image(o.output, image, wo);
+  if (result.cancelled)
+    checkpoint.save();
+  else
+    checkpoint.remove();
   const double write_s = seconds_since(t_write);
 
   if (!o.quiet || o.stats) {
@@ -139,7 +206,10 @@ int render(CliOptions& o) {
                result.supersampled_pixels, parse_s, build_s, accelerator->name(), render_s, write_s);
   }
   if (result.cancelled) {
-    fmt::print(stderr, "snell: interrupted; the partial image was written to {}\n", o.output.string());
+    fmt::print(stderr,
+               "snell: interrupted; the partial image was written to {} and the finished tiles to {}\n"
+               "snell: to finish it, run the same command again with +C (or --continue)\n",
+               o.output.string(), checkpoint.path().string());
     return kInterrupted;
   }
   return kOk;
@@ -165,6 +235,7 @@ int run_app(const std::vector<std::string>& args) {
       o.accel = accel;
       return render(o);
     }
+    if (!args.empty() && args[0] == "merge") return run_merge({args.begin() + 1, args.end()});
     if (args.size() == 1 && args[0] == "--version") {
       fmt::print("snell {}\n", SNELL_VERSION);
       return kOk;
@@ -185,6 +256,9 @@ int run_app(const std::vector<std::string>& args) {
   } catch (const sdl::ParseError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kSceneError;
+  } catch (const render::ResumeError& e) {
+    fmt::print(stderr, "snell: error: {}\n", e.what());
+    return kUsageError;
   } catch (const io::ImageIoError& e) {
     fmt::print(stderr, "snell: error: {}\n", e.what());
     return kIoError;

@@ -34,6 +34,13 @@ struct CliOptions {
   bool stats = false;
   /// Parse and build the scene, print a summary, render nothing (`--parse-only`).
   bool parse_only = false;
+  /// Partial render (POV-Ray +SR +ER +SC +EC), as written: "0.5" is a fraction of the image, "120" a
+  /// 1-based pixel row or column (end inclusive). Empty: the image's edge.
+  std::string start_row, end_row, start_col, end_col;
+  /// `+C` / `--continue`: finish the render whose resume file lies beside the output.
+  bool resume = false;
+  /// `--checkpoint S`: write the resume file every S seconds while rendering (0: only when interrupted).
+  double checkpoint_seconds = 0;
   std::vector<std::filesystem::path> library_paths;
   std::map<std::string, double> declares;
   /// Warnings found while reading the command line (unknown or unsupported flags), printed unless quiet.
@@ -46,5 +53,12 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& args);
 
 /// Checks values common to both syntaxes and fills in the default output name. Throws UsageError.
 void validate(CliOptions& options);
+
+/// The pixels +SR/+ER/+SC/+EC select, x0 <= x < x1, y0 <= y < y1 (the whole image without them).
+/// Throws UsageError for a bound that is not a number, lies outside the image or leaves nothing.
+struct PixelBounds {
+  int x0, y0, x1, y1;
+};
+PixelBounds render_region(const CliOptions& options);
 
 }  // namespace snell::cli

@@ -38,9 +38,9 @@ bool starts_with(const std::string& s, const std::string& prefix) {
 }
 
 /// POV-Ray switches that snell knows but does not implement: accepted with a warning.
-constexpr const char* kUnsupported[] = {
-    "Q",  "AM", "AG", "UA", "GA", "GD", "GF", "GR", "GS", "GW", "K",  "KFI", "KFF", "KI",  "KF", "KC", "SF",
-    "EF", "SC", "EC", "SR", "ER", "C",  "UV", "UR", "UF", "UD", "UO", "MB",  "MV",  "RVP", "HT", "HN", "HI"};
+constexpr const char* kUnsupported[] = {"Q",  "AM",  "AG",  "UA", "GA", "GD",  "GF", "GR", "GS", "GW",
+                                        "K",  "KFI", "KFF", "KI", "KF", "KC",  "SF", "EF", "UV", "UR",
+                                        "UF", "UD",  "UO",  "MB", "MV", "RVP", "HT", "HN", "HI"};
 /// Known switches without an effect on a batch render: accepted silently.
 constexpr const char* kIgnored[] = {"D", "P", "V", "X", "GP"};
 
@@ -69,6 +69,10 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& args) {
         o.parse_only = true;
       } else if (name == "--threads") {
         o.threads = parse_int(name, eq == std::string::npos ? next_value(name) : value);
+      } else if (name == "--continue") {
+        o.resume = true;
+      } else if (name == "--checkpoint") {
+        o.checkpoint_seconds = parse_double(name, eq == std::string::npos ? next_value(name) : value);
       } else if (name == "--accel") {
         o.accel = eq == std::string::npos ? next_value(name) : value;
       } else {
@@ -104,6 +108,16 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& args) {
       o.output = rest_after(1);
     } else if (key[0] == 'L' && key.size() > 1) {
       o.library_paths.emplace_back(rest_after(1));
+    } else if (key == "C") {
+      o.resume = on;
+    } else if (starts_with(key, "SR") && key.size() > 2) {
+      o.start_row = rest_after(2);
+    } else if (starts_with(key, "ER") && key.size() > 2) {
+      o.end_row = rest_after(2);
+    } else if (starts_with(key, "SC") && key.size() > 2) {
+      o.start_col = rest_after(2);
+    } else if (starts_with(key, "EC") && key.size() > 2) {
+      o.end_col = rest_after(2);
     } else if (starts_with(key, "WT")) {
       o.threads = parse_int(arg, rest_after(2));
     } else if (key[0] == 'W' && key.size() > 1) {

@@ -18,6 +18,7 @@ void validate(CliOptions& o) {
   if (o.aa_depth < 1 || o.aa_depth > 9) throw UsageError("anti-aliasing depth must be between 1 and 9");
   if (o.jitter_amount < 0) throw UsageError("jitter amount must not be negative");
   if (o.threads < 0) throw UsageError("thread count must not be negative");
+  if (o.checkpoint_seconds < 0) throw UsageError("checkpoint interval must not be negative");
   if (o.bits != 8 && o.bits != 16) throw UsageError("bit depth must be 8 or 16");
   if (o.accel != "auto" && o.accel != "embree" && o.accel != "none")
     throw UsageError("unknown accelerator '" + o.accel + "' (expected embree or none)");

@@ -34,13 +34,19 @@ OIIO::TypeDesc type_of(int pixel_type) {
 }  // namespace
 
 extern "C" __attribute__((visibility("default"))) int snell_oiio_write(const char* path, int width,
-                                                                       int height, int pixel_type,
-                                                                       const void* pixels, int srgb_tag,
-                                                                       char* error, size_t error_size) {
+                                                                       int height, int channels,
+                                                                       int pixel_type, const void* pixels,
+                                                                       int srgb_tag, char* error,
+                                                                       size_t error_size) {
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return fail(OIIO::geterror(), error, error_size);
   const OIIO::TypeDesc type = type_of(pixel_type);
-  OIIO::ImageSpec spec(width, height, 3, type);
+  OIIO::ImageSpec spec(width, height, channels, type);
+  if (channels == 4) {
+    spec.alpha_channel = 3;
+    // snell's colours are not multiplied by alpha; stop the PNG writer from dividing them by it.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+  }
   if (srgb_tag) spec.attribute("oiio:ColorSpace", "sRGB");
   if (!out->open(path, spec) || !out->write_image(type, pixels) || !out->close())
     return fail(out->geterror(), error, error_size);
@@ -48,24 +54,37 @@ extern "C" __attribute__((visibility("default"))) int snell_oiio_write(const cha
 }
 
 extern "C" __attribute__((visibility("default"))) int snell_oiio_read(const char* path, int* width,
-                                                                      int* height, float** pixels,
-                                                                      char* error, size_t error_size) {
-  auto in = OIIO::ImageInput::open(path);
+                                                                      int* height, int* file_channels,
+                                                                      float** pixels, char* error,
+                                                                      size_t error_size) {
+  // Keep colours as stored (not multiplied by alpha), which is what image maps and merges expect.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path, &config);
   if (!in) return fail(OIIO::geterror(), error, error_size);
   const OIIO::ImageSpec& spec = in->spec();
   const int channels = spec.nchannels;
   if (spec.width <= 0 || spec.height <= 0 || channels <= 0) return fail("empty image", error, error_size);
   const size_t count = static_cast<size_t>(spec.width) * spec.height;
+  // A header may claim any size; refuse what would not fit in memory rather than die allocating it.
+  constexpr size_t kMaxPixels = size_t{1} << 28;
+  if (count > kMaxPixels || channels > 64) return fail("image too large", error, error_size);
   std::vector<float> all(count * channels);
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, all.data()))
     return fail(in->geterror(), error, error_size);
-  auto* rgb = static_cast<float*>(std::malloc(count * 3 * sizeof(float)));
-  if (!rgb) return fail("out of memory", error, error_size);
-  for (size_t p = 0; p < count; ++p)
-    for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = all[p * channels + (channels < 3 ? 0 : c)];
+  auto* rgba = static_cast<float*>(std::malloc(count * 4 * sizeof(float)));
+  if (!rgba) return fail("out of memory", error, error_size);
+  // Grey (1 or 2 channels) is replicated; alpha is the spec's alpha channel, or 1 where there is none.
+  const int alpha =
+      spec.alpha_channel >= 0 ? spec.alpha_channel : (channels == 2 || channels >= 4 ? channels - 1 : -1);
+  for (size_t p = 0; p < count; ++p) {
+    for (int c = 0; c < 3; ++c) rgba[p * 4 + c] = all[p * channels + (channels < 3 ? 0 : c)];
+    rgba[p * 4 + 3] = alpha >= 0 ? all[p * channels + alpha] : 1.0f;
+  }
   *width = spec.width;
   *height = spec.height;
-  *pixels = rgb;
+  *file_channels = channels;
+  *pixels = rgba;
   return 0;
 }
 

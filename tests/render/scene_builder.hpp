@@ -36,4 +36,23 @@ inline scene::Light point_light(const math::Vec3& p, const math::Color& c = math
   return l;
 }
 
+/// A reflective sphere, a glassy one and a floor: reflection, refraction and shadows in a few pixels.
+inline scene::Scene two_spheres() {
+  scene::Scene s;
+  material::Finish shiny;
+  shiny.phong = 0.8;
+  shiny.reflection_min = shiny.reflection_max = math::Color(0.3);
+  s.objects.push_back(test::object(std::make_shared<geometry::Sphere>(math::Vec3(-0.6, 0, 0), 0.7),
+                                   test::texture({math::Color(0.9, 0.2, 0.1)}, shiny)));
+  s.objects.push_back(test::object(std::make_shared<geometry::Sphere>(math::Vec3(0.7, 0.2, 0.5), 0.6),
+                                   test::texture({math::Color(0.2, 0.9, 0.4), 0.6, 0.1}), 1.4));
+  s.objects.push_back(
+      test::object(std::make_shared<geometry::Plane>(math::Vec3(0, 1, 0), -0.7), test::texture({math::Color(0.8)})));
+  s.lights.push_back(test::point_light({3, 5, -4}));
+  s.background.rgb = math::Color(0.1, 0.2, 0.4);
+  s.camera.location = {0, 0.5, -4};
+  s.camera.right = {4.0 / 3, 0, 0};
+  return s;
+}
+
 }  // namespace snell::test

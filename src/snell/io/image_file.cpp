@@ -21,12 +21,25 @@ std::string lower_extension(const fs::path& path) {
   return ext;
 }
 
+/// Interleaved RGB or RGBA (when the image has a coverage channel) as written to the file. Colours pass
+/// through `encode`; alpha is stored linearly, as every format defines it.
+template <typename T, typename Encode>
+std::vector<T> interleave(const Image& image, Encode encode) {
+  const int channels = image.has_alpha() ? 4 : 3;
+  const size_t pixels = static_cast<size_t>(image.width) * image.height;
+  std::vector<T> out(pixels * channels);
+  for (size_t p = 0; p < pixels; ++p) {
+    for (int c = 0; c < 3; ++c) out[p * channels + c] = encode(image.rgb[p * 3 + c], false);
+    if (channels == 4) out[p * channels + 3] = encode(image.alpha[p], true);
+  }
+  return out;
+}
+
 template <typename T>
 std::vector<T> quantise(const Image& image, const Encoding& encoding, double max_value) {
-  std::vector<T> out(image.rgb.size());
-  for (size_t i = 0; i < out.size(); ++i)
-    out[i] = static_cast<T>(std::lround(encoding.encode(image.rgb[i]) * max_value));
-  return out;
+  return interleave<T>(image, [&](float v, bool is_alpha) {
+    return static_cast<T>(std::lround((is_alpha ? v : encoding.encode(v)) * max_value));
+  });
 }
 
 }  // namespace
@@ -52,7 +65,12 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
   int type = kSnellFloat;
   std::vector<uint8_t> bytes8;
   std::vector<uint16_t> bytes16;
+  std::vector<float> floats;
   const void* data = image.rgb.data();
+  if (ext != ".png" && image.has_alpha()) {
+    floats = interleave<float>(image, [](float v, bool) { return v; });
+    data = floats.data();
+  }
   if (ext == ".png") {
     if (options.bits == 16) {
       bytes16 = quantise<uint16_t>(image, options.encoding, 65535.0);
@@ -66,8 +84,9 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
   }
   const ImageBackend& backend = image_backend();
   char why[512] = {};
-  if (backend.write(temp.c_str(), image.width, image.height, type, data, ext == ".png", why, sizeof why) !=
-      0) {
+  const int channels = image.has_alpha() ? 4 : 3;
+  if (backend.write(temp.c_str(), image.width, image.height, channels, type, data, ext == ".png", why,
+                    sizeof why) != 0) {
     std::error_code ignored;
     fs::remove(temp, ignored);
     throw ImageIoError("cannot write '" + path.string() + "': " + why);
@@ -83,13 +102,19 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
 
 Image read_image(const fs::path& path) {
   const ImageBackend& backend = image_backend();
-  int width = 0, height = 0;
+  int width = 0, height = 0, channels = 0;
   float* pixels = nullptr;
   char why[512] = {};
-  if (backend.read(path.c_str(), &width, &height, &pixels, why, sizeof why) != 0)
+  if (backend.read(path.c_str(), &width, &height, &channels, &pixels, why, sizeof why) != 0)
     throw ImageIoError("cannot read '" + path.string() + "': " + why);
   Image image(width, height);
-  std::copy(pixels, pixels + static_cast<size_t>(width) * height * 3, image.rgb.begin());
+  const bool has_alpha = channels == 2 || channels >= 4;
+  if (has_alpha) image.clear_alpha();
+  const size_t count = static_cast<size_t>(width) * height;
+  for (size_t p = 0; p < count; ++p) {
+    for (int c = 0; c < 3; ++c) image.rgb[p * 3 + c] = pixels[p * 4 + c];
+    if (has_alpha) image.alpha[p] = pixels[p * 4 + 3];
+  }
   backend.free(pixels);
   return image;
 }

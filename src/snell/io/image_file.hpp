@@ -26,7 +26,8 @@ struct WriteOptions {
 void write_image(const std::filesystem::path& path, const Image& image, const WriteOptions& options);
 
 /// Reads any format OIIO knows into floats: the file's stored values scaled to [0,1] for integer formats
-/// (no decoding curve applied), RGB (grey is replicated, alpha dropped). Throws ImageIoError.
+/// (no decoding curve applied), RGB (grey is replicated) and, when the file has one, alpha. Throws
+/// ImageIoError.
 Image read_image(const std::filesystem::path& path);
 
 /// Whether the extension names a format write_image supports (.png, .exr, .hdr; case-insensitive).

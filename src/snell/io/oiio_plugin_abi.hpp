@@ -10,13 +10,15 @@ extern "C" {
 /// Pixel types of the interleaved RGB buffers crossing the interface.
 enum SnellPixelType { kSnellUint8 = 0, kSnellUint16 = 1, kSnellFloat = 2 };
 
-/// Writes `width` x `height` RGB pixels to `path` (format by extension). `srgb_tag` marks the file as sRGB.
-/// Returns 0 on success, else writes a message into `error` (NUL-terminated, at most `error_size` bytes).
-using SnellOiioWrite = int (*)(const char* path, int width, int height, int pixel_type, const void* pixels,
-                               int srgb_tag, char* error, size_t error_size);
-/// Reads an image as interleaved float RGB (grey replicated, alpha dropped) into a buffer from malloc that
-/// the caller frees with the plugin's SnellOiioFree. Returns 0 on success.
-using SnellOiioRead = int (*)(const char* path, int* width, int* height, float** pixels, char* error,
-                              size_t error_size);
+/// Writes `width` x `height` pixels of `channels` (3: RGB, 4: RGBA) to `path` (format by extension).
+/// `srgb_tag` marks the file as sRGB. Returns 0 on success, else writes a message into `error`
+/// (NUL-terminated, at most `error_size` bytes).
+using SnellOiioWrite = int (*)(const char* path, int width, int height, int channels, int pixel_type,
+                               const void* pixels, int srgb_tag, char* error, size_t error_size);
+/// Reads an image as interleaved float RGBA (grey replicated; alpha 1 where the file has none) into a buffer
+/// from malloc that the caller frees with the plugin's SnellOiioFree. `*file_channels` receives the file's own
+/// channel count. Returns 0 on success.
+using SnellOiioRead = int (*)(const char* path, int* width, int* height, int* file_channels, float** pixels,
+                              char* error, size_t error_size);
 using SnellOiioFree = void (*)(float* pixels);
 }

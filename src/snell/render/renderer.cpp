@@ -20,24 +20,6 @@ namespace snell::render {
 
 using math::Color;
 
-namespace {
-
-constexpr int kTileSize = 32;
-
-struct Tile {
-  int x0, y0, x1, y1;
-};
-
-std::vector<Tile> make_tiles(int width, int height) {
-  std::vector<Tile> tiles;
-  for (int y = 0; y < height; y += kTileSize)
-    for (int x = 0; x < width; x += kTileSize)
-      tiles.push_back({x, y, std::min(x + kTileSize, width), std::min(y + kTileSize, height)});
-  return tiles;
-}
-
-}  // namespace
-
 double color_distance(const Color& a, const Color& b) {
   return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
 }
@@ -50,24 +32,48 @@ Renderer::Renderer(const scene::Scene& scene, const accel::Accelerator& accelera
   if (options_.aa_depth < 1 || options_.aa_depth > 9)
     throw std::invalid_argument("anti-aliasing depth must be between 1 and 9");
   if (options_.threads < 0) throw std::invalid_argument("thread count must not be negative");
+  if (!options_.region.empty() && region().empty())
+    throw std::invalid_argument("the render region lies outside the image");
+}
+
+PixelRect Renderer::region() const {
+  const PixelRect all{0, 0, options_.width, options_.height};
+  if (options_.region.empty()) return all;
+  const PixelRect& r = options_.region;
+  return {std::max(r.x0, 0), std::max(r.y0, 0), std::min(r.x1, all.x1), std::min(r.y1, all.y1)};
+}
+
+io::Image Renderer::blank_target() const {
+  io::Image image(options_.width, options_.height);
+  image.clear_alpha();
+  return image;
 }
 
 RenderResult Renderer::render() const {
+  RenderResult result;
+  result.image = blank_target();
+  static_cast<RenderStats&>(result) = render_into(result.image);
+  return result;
+}
+
+RenderStats Renderer::render_into(io::Image& image) const {
   const auto integrator = make_integrator(options_.integrator, scene_, accel_);
   const auto camera = scene::make_camera(scene_.camera);
   const int w = options_.width, h = options_.height;
-  const std::vector<Tile> tiles = make_tiles(w, h);
+  if (image.width != w || image.height != h || !image.has_alpha())
+    throw std::invalid_argument("render target does not match the image size");
+  std::vector<Tile> tiles = make_tiles(w, h, region());
+  if (options_.skip_tile) std::erase_if(tiles, [&](const Tile& t) { return options_.skip_tile(t); });
   // Focal blur samples already spread over each pixel, so they are its anti-aliasing too.
-  const int passes = options_.antialias && !scene_.camera.focal_blur() ? 2 : 1;
+  const bool antialias = options_.antialias && !scene_.camera.focal_blur();
 
-  RenderResult result;
-  result.image = io::Image(w, h);
+  RenderStats stats;
   tbb::enumerable_thread_specific<TraceContext> contexts;
   std::atomic<size_t> tiles_done{0};
   std::atomic<uint64_t> supersampled{0};
   std::atomic<bool> stopped{false};
   std::mutex progress_mutex;
-  const size_t total_tiles = tiles.size() * passes;
+  const size_t total_tiles = tiles.size();
 
   auto cancelled = [&] { return options_.cancel && options_.cancel->load(std::memory_order_relaxed); };
   auto tile_finished = [&] {
@@ -121,53 +127,69 @@ RenderResult Renderer::render() const {
   };
 
   // Pass 1: one ray through each pixel centre (or the focal blur samples).
-  io::Image& image = result.image;
-  auto first_pass = [&](const Tile& t) {
-    TraceContext& ctx = contexts.local();
-    for (int y = t.y0; y < t.y1; ++y)
-      for (int x = t.x0; x < t.x1; ++x)
-        image.set(x, y,
-                  focal_blur ? blurred_pixel(x, y, ctx) : trace_point((x + 0.5) / w, (y + 0.5) / h, ctx));
+  auto first_sample = [&](int x, int y, TraceContext& ctx) {
+    return focal_blur ? blurred_pixel(x, y, ctx) : trace_point((x + 0.5) / w, (y + 0.5) / h, ctx);
   };
 
   // Pass 2 (POV-Ray "Anti-Aliasing Options", method 1): a pixel that differs from a neighbour by more than
   // the threshold gets depth x depth more samples on a sub-pixel grid, averaged with its first sample.
-  const io::Image* first = nullptr;
-  io::Image first_copy;
-  auto second_pass = [&](const Tile& t) {
-    TraceContext& ctx = contexts.local();
+  // `first(x, y)` is the first-pass colour of any pixel of the tile or its one-pixel border.
+  auto supersample = [&](int x, int y, const auto& first, TraceContext& ctx) {
+    const Color c = first(x, y);
+    bool differs = false;
+    const int nx[4] = {x - 1, x + 1, x, x};
+    const int ny[4] = {y, y, y - 1, y + 1};
+    for (int k = 0; k < 4 && !differs; ++k)
+      if (nx[k] >= 0 && nx[k] < w && ny[k] >= 0 && ny[k] < h)
+        differs = color_distance(c, first(nx[k], ny[k])) > options_.aa_threshold;
+    if (!differs) return c;
+    ++supersampled;
     const int n = options_.aa_depth;
-    for (int y = t.y0; y < t.y1; ++y)
-      for (int x = t.x0; x < t.x1; ++x) {
-        const Color c = first->at(x, y);
-        bool differs = false;
-        const int nx[4] = {x - 1, x + 1, x, x};
-        const int ny[4] = {y, y, y - 1, y + 1};
-        for (int k = 0; k < 4 && !differs; ++k)
-          if (nx[k] >= 0 && nx[k] < w && ny[k] >= 0 && ny[k] < h)
-            differs = color_distance(c, first->at(nx[k], ny[k])) > options_.aa_threshold;
-        if (!differs) continue;
-        ++supersampled;
-        Color sum = c;
-        for (int j = 0; j < n; ++j)
-          for (int i = 0; i < n; ++i) {
-            double dx = (i + 0.5) / n, dy = (j + 0.5) / n;
-            if (options_.jitter) {
-              const uint64_t pixel =
-                  static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
-              ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(j * n + i + 1),
-                                          static_cast<uint64_t>(options_.frame), options_.seed),
-                           0xda3e39cb94b95bdbULL);
-              dx += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
-              dy += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
-            }
-            sum += trace_point((x + dx) / w, (y + dy) / h, ctx);
-          }
-        image.set(x, y, sum / static_cast<double>(n * n + 1));
+    Color sum = c;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        double dx = (i + 0.5) / n, dy = (j + 0.5) / n;
+        if (options_.jitter) {
+          const uint64_t pixel =
+              static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
+          ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(j * n + i + 1),
+                                      static_cast<uint64_t>(options_.frame), options_.seed),
+                       0xda3e39cb94b95bdbULL);
+          dx += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
+          dy += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
+        }
+        sum += trace_point((x + dx) / w, (y + dy) / h, ctx);
       }
+    return sum / static_cast<double>(n * n + 1);
   };
 
-  auto run_pass = [&](const auto& body) {
+  // Each tile is self-contained: with anti-aliasing it traces the first pass over itself and a one-pixel
+  // border (first-pass samples depend only on their pixel), so its pixels are the same whichever tiles,
+  // ranks or resumed runs render the rest of the image.
+  auto render_tile = [&](const Tile& tile) {
+    TraceContext& ctx = contexts.local();
+    const PixelRect& t = tile.rect;
+    if (!antialias) {
+      for (int y = t.y0; y < t.y1; ++y)
+        for (int x = t.x0; x < t.x1; ++x) image.set(x, y, first_sample(x, y, ctx));
+    } else {
+      const PixelRect b{std::max(t.x0 - 1, 0), std::max(t.y0 - 1, 0), std::min(t.x1 + 1, w),
+                        std::min(t.y1 + 1, h)};
+      const int bw = b.x1 - b.x0;
+      std::vector<Color> first(static_cast<size_t>(b.area()));
+      for (int y = b.y0; y < b.y1; ++y)
+        for (int x = b.x0; x < b.x1; ++x)
+          first[static_cast<size_t>(y - b.y0) * bw + (x - b.x0)] = first_sample(x, y, ctx);
+      auto first_at = [&](int x, int y) { return first[static_cast<size_t>(y - b.y0) * bw + (x - b.x0)]; };
+      for (int y = t.y0; y < t.y1; ++y)
+        for (int x = t.x0; x < t.x1; ++x) image.set(x, y, supersample(x, y, first_at, ctx));
+    }
+    for (int y = t.y0; y < t.y1; ++y)
+      for (int x = t.x0; x < t.x1; ++x) image.set_alpha(x, y, 1.0f);
+    if (options_.tile_done) options_.tile_done(tile, image);
+  };
+
+  auto run_all = [&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1),
                       [&](const tbb::blocked_range<size_t>& r) {
                         for (size_t i = r.begin(); i != r.end(); ++i) {
@@ -175,19 +197,10 @@ RenderResult Renderer::render() const {
                             stopped = true;
                             return;
                           }
-                          body(tiles[i]);
+                          render_tile(tiles[i]);
                           tile_finished();
                         }
                       });
-  };
-
-  auto run_all = [&] {
-    run_pass(first_pass);
-    if (passes == 2 && !stopped) {
-      first_copy = image;
-      first = &first_copy;
-      run_pass(second_pass);
-    }
   };
   if (options_.threads > 0) {
     tbb::task_arena arena(options_.threads);
@@ -196,10 +209,11 @@ RenderResult Renderer::render() const {
     run_all();
   }
 
-  for (const TraceContext& ctx : contexts) result.rays += ctx.counters;
-  result.supersampled_pixels = supersampled;
-  result.cancelled = stopped;
-  return result;
+  for (const TraceContext& ctx : contexts) stats.rays += ctx.counters;
+  stats.supersampled_pixels = supersampled;
+  stats.tiles_rendered = tiles_done;
+  stats.cancelled = stopped;
+  return stats;
 }
 
 }  // namespace snell::render

@@ -10,6 +10,7 @@
 #include "snell/accel/accelerator.hpp"
 #include "snell/io/image.hpp"
 #include "snell/render/ray_counters.hpp"
+#include "snell/render/tiles.hpp"
 #include "snell/scene/scene.hpp"
 
 namespace snell::render {
@@ -30,17 +31,30 @@ struct RenderOptions {
   int frame = 0;
   double time = 0;
   std::string integrator = "whitted";
+  /// The pixels to render (POV-Ray +SC/+EC/+SR/+ER); empty means the whole image. Pixels outside keep
+  /// alpha 0. Every pixel inside comes out exactly as in a render of the whole image.
+  PixelRect region;
+  /// Tiles already rendered (a resumed render): left as they are in the target image.
+  std::function<bool(const Tile&)> skip_tile;
   /// Set from another thread (Ctrl-C) to stop early; finished tiles stay in the image.
   const std::atomic<bool>* cancel = nullptr;
   /// Called with the fraction done (0..1), serialised, from worker threads.
   std::function<void(double)> progress;
+  /// Called from a worker thread once a tile's final pixels (and alpha 1) are in the target image; calls
+  /// may overlap, so the callee serialises. Used for checkpoints and for sending tiles to another rank.
+  std::function<void(const Tile&, const io::Image&)> tile_done;
 };
 
-struct RenderResult {
-  io::Image image;
+struct RenderStats {
   RayCounters rays;
   uint64_t supersampled_pixels = 0;
+  uint64_t tiles_rendered = 0;
   bool cancelled = false;
+};
+
+struct RenderResult : RenderStats {
+  /// Linear RGB with a coverage channel (Image::alpha): 1 for rendered pixels.
+  io::Image image;
 };
 
 class Renderer {
@@ -48,6 +62,13 @@ class Renderer {
   /// Throws std::invalid_argument for bad options (size, aa depth, threads, integrator name).
   Renderer(const scene::Scene& scene, const accel::Accelerator& accelerator, RenderOptions options);
   RenderResult render() const;
+  /// Renders the region's tiles not skipped into `target` (width x height, with a coverage channel, as from
+  /// blank_target()), leaving other pixels untouched.
+  RenderStats render_into(io::Image& target) const;
+  /// A black image of the options' size with every pixel marked unrendered.
+  io::Image blank_target() const;
+  /// The region actually rendered: the options' region clipped to the image, or the whole image.
+  PixelRect region() const;
 
  private:
   const scene::Scene& scene_;
