@@ -8,8 +8,10 @@
 #include <csignal>
 #include <cstdio>
 #include <memory>
+#include <mutex>
 
 #include "cli/checkpoint.hpp"
+#include "cli/distributed.hpp"
 #include "cli/merge_command.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
@@ -47,6 +49,15 @@ std::filesystem::path resume_path(const std::filesystem::path& output) {
   return p;
 }
 
+/// Errors are the same on every rank of a distributed render; rank 0 prints them once.
+void report_error(const char* what) {
+  if (distributed::rank() == 0) fmt::print(stderr, "snell: error: {}\n", what);
+}
+
+std::string version_line() {
+  return fmt::format("snell {} ({})", SNELL_VERSION, distributed::support());
+}
+
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -64,7 +75,7 @@ const char* kPovHelp =
 
 std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   auto app = std::make_unique<CLI::App>("snell: renders POV-Ray 3.7 scenes", "snell");
-  app->set_version_flag("--version", std::string("snell ") + SNELL_VERSION);
+  app->set_version_flag("--version", version_line());
   app->require_subcommand(1);
   app->footer(kPovHelp);
   app->set_help_flag("--help", "print this help");
@@ -110,6 +121,11 @@ std::unique_ptr<accel::Accelerator> build_accelerator(const std::string& name, c
 
 int render(CliOptions& o) {
   validate(o);
+  // Every rank parses and renders; only rank 0 reports and writes.
+  if (distributed::rank() != 0) {
+    o.quiet = true;
+    o.stats = false;
+  }
   const PixelBounds bounds = render_region(o);
   install_stop_handlers();
   if (!o.quiet)
@@ -152,7 +168,6 @@ int render(CliOptions& o) {
   ro.region = {bounds.x0, bounds.y0, bounds.x1, bounds.y1};
   ro.cancel = &g_interrupted;
   Progress progress(!o.quiet);
-  ro.progress = [&progress](double f) { progress.update(f); };
 
   const uint64_t fingerprint = render_fingerprint(o, bounds);
   io::Image image(o.width, o.height);
@@ -170,17 +185,28 @@ int render(CliOptions& o) {
                  resume_path(o.output).string());
     }
   }
-  std::vector<bool> skip(static_cast<size_t>(render::tiles_across(o.width)) * render::tiles_down(o.height));
-  for (const render::Tile& t : resumed) skip[static_cast<size_t>(t.index)] = true;
   Checkpoint checkpoint(resume_path(o.output), fingerprint, image, resumed, o.checkpoint_seconds);
-  ro.skip_tile = [&skip](const render::Tile& t) { return skip[static_cast<size_t>(t.index)]; };
-  ro.tile_done = [&checkpoint](const render::Tile& t, const io::Image&) { checkpoint.tile_done(t); };
-  const render::Renderer renderer(scene, *accelerator, ro);
+  std::vector<bool> resumed_index(static_cast<size_t>(render::tiles_across(o.width)) *
+                                  render::tiles_down(o.height));
+  for (const render::Tile& t : resumed) resumed_index[static_cast<size_t>(t.index)] = true;
+  distributed::Job job{scene, *accelerator, ro, {}, {}};
+  for (const render::Tile& t : render::make_tiles(o.width, o.height, ro.region))
+    if (!resumed_index[static_cast<size_t>(t.index)]) job.tiles.push_back(t);
+  // Progress counts tiles as they reach this process's image (on rank 0 also other ranks' tiles).
+  std::mutex progress_mutex;
+  size_t tiles_finished = 0;
+  job.tile_done = [&](const render::Tile& t) {
+    checkpoint.tile_done(t);
+    std::lock_guard lock(progress_mutex);
+    progress.update(static_cast<double>(++tiles_finished) / static_cast<double>(job.tiles.size()));
+  };
 
   const auto t_render = Clock::now();
-  const render::RenderStats result = renderer.render_into(image);
+  const render::RenderStats result = distributed::render(job, image);
   const double render_s = seconds_since(t_render);
   progress.finish(render_s);
+  // Other ranks have sent their tiles to rank 0, which writes the image.
+  if (distributed::rank() != 0) return result.cancelled ? kInterrupted : kOk;
 
   const auto t_write = Clock::now();
   io::WriteOptions wo;
@@ -237,7 +263,7 @@ int run_app(const std::vector<std::string>& args) {
     }
     if (!args.empty() && args[0] == "merge") return run_merge({args.begin() + 1, args.end()});
     if (args.size() == 1 && args[0] == "--version") {
-      fmt::print("snell {}\n", SNELL_VERSION);
+      fmt::print("{}\n", version_line());
       return kOk;
     }
     if (args.empty() || (args.size() == 1 && (args[0] == "--help" || args[0] == "-h" || args[0] == "help"))) {
@@ -251,22 +277,22 @@ int run_app(const std::vector<std::string>& args) {
     CliOptions o = parse_pov_arguments(args);
     return render(o);
   } catch (const UsageError& e) {
-    fmt::print(stderr, "snell: error: {}\n", e.what());
+    report_error(e.what());
     return kUsageError;
   } catch (const sdl::ParseError& e) {
-    fmt::print(stderr, "{}\n", e.what());
+    if (distributed::rank() == 0) fmt::print(stderr, "{}\n", e.what());
     return kSceneError;
   } catch (const render::ResumeError& e) {
-    fmt::print(stderr, "snell: error: {}\n", e.what());
+    report_error(e.what());
     return kUsageError;
   } catch (const io::ImageIoError& e) {
-    fmt::print(stderr, "snell: error: {}\n", e.what());
+    report_error(e.what());
     return kIoError;
   } catch (const std::invalid_argument& e) {
-    fmt::print(stderr, "snell: error: {}\n", e.what());
+    report_error(e.what());
     return kUsageError;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "snell: error: {}\n", e.what());
+    report_error(e.what());
     return kIoError;
   }
 }

@@ -5,6 +5,10 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <mutex>
@@ -19,6 +23,11 @@
 namespace snell::render {
 
 using math::Color;
+
+#if defined(__SSE__)
+/// MXCSR flush-to-zero (bit 15) and denormals-are-zero (bit 6).
+constexpr unsigned kFlushDenormals = 0x8040;
+#endif
 
 double color_distance(const Color& a, const Color& b) {
   return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
@@ -62,7 +71,8 @@ RenderStats Renderer::render_into(io::Image& image) const {
   const int w = options_.width, h = options_.height;
   if (image.width != w || image.height != h || !image.has_alpha())
     throw std::invalid_argument("render target does not match the image size");
-  std::vector<Tile> tiles = make_tiles(w, h, region());
+  std::vector<Tile> tiles;
+  if (!options_.tile_source) tiles = make_tiles(w, h, region());
   if (options_.skip_tile) std::erase_if(tiles, [&](const Tile& t) { return options_.skip_tile(t); });
   // Focal blur samples already spread over each pixel, so they are its anti-aliasing too.
   const bool antialias = options_.antialias && !scene_.camera.focal_blur();
@@ -78,7 +88,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
   auto cancelled = [&] { return options_.cancel && options_.cancel->load(std::memory_order_relaxed); };
   auto tile_finished = [&] {
     const size_t done = ++tiles_done;
-    if (options_.progress) {
+    if (options_.progress && total_tiles > 0) {
       std::lock_guard lock(progress_mutex);
       options_.progress(static_cast<double>(done) / static_cast<double>(total_tiles));
     }
@@ -167,6 +177,11 @@ RenderStats Renderer::render_into(io::Image& image) const {
   // border (first-pass samples depend only on their pixel), so its pixels are the same whichever tiles,
   // ranks or resumed runs render the rest of the image.
   auto render_tile = [&](const Tile& tile) {
+  // Same denormal handling on every thread: Embree's threads flush denormals to zero and a caller's may
+  // not, and a pixel must not depend on which thread traced it.
+#if defined(__SSE__)
+    _mm_setcsr(_mm_getcsr() | kFlushDenormals);
+#endif
     TraceContext& ctx = contexts.local();
     const PixelRect& t = tile.rect;
     if (!antialias) {
@@ -189,7 +204,22 @@ RenderStats Renderer::render_into(io::Image& image) const {
     if (options_.tile_done) options_.tile_done(tile, image);
   };
 
+  // A tile source (a distributed render's queue) is drained by one loop per thread.
+  auto drain_source = [&] {
+    const int loops = options_.threads > 0 ? options_.threads : tbb::this_task_arena::max_concurrency();
+    tbb::parallel_for(0, loops, [&](int) {
+      while (!cancelled()) {
+        const std::optional<Tile> tile = options_.tile_source();
+        if (!tile) return;
+        render_tile(*tile);
+        tile_finished();
+      }
+      stopped = true;
+    });
+  };
+
   auto run_all = [&] {
+    if (options_.tile_source) return drain_source();
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1),
                       [&](const tbb::blocked_range<size_t>& r) {
                         for (size_t i = r.begin(); i != r.end(); ++i) {

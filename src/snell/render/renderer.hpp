@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "snell/accel/accelerator.hpp"
@@ -36,6 +37,9 @@ struct RenderOptions {
   PixelRect region;
   /// Tiles already rendered (a resumed render): left as they are in the target image.
   std::function<bool(const Tile&)> skip_tile;
+  /// When set, tiles come from here instead (region and skip_tile unused): each render thread asks for the
+  /// next tile until it returns nothing. Calls may overlap. Used by distributed renders (src/cli/mpi).
+  std::function<std::optional<Tile>()> tile_source;
   /// Set from another thread (Ctrl-C) to stop early; finished tiles stay in the image.
   const std::atomic<bool>* cancel = nullptr;
   /// Called with the fraction done (0..1), serialised, from worker threads.

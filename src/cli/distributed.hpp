@@ -1,0 +1,47 @@
+#pragma once
+// One render over many processes with Open MPI (issue 11; docs/distributed.md). Rank 0 parses like every
+// rank, hands out tiles from a queue, renders tiles itself on a second thread, gathers the others' pixels and
+// writes the image; ranks 1..N-1 render the tiles they are given with all their cores. Tiles are
+// self-contained and seeded by pixel, so the image is identical to a single-process render for any N.
+// Built only where MPI is (SNELL_HAVE_MPI); elsewhere these are single-process stand-ins.
+#include <functional>
+#include <vector>
+
+#include "snell/accel/accelerator.hpp"
+#include "snell/io/image.hpp"
+#include "snell/render/renderer.hpp"
+#include "snell/scene/scene.hpp"
+
+namespace snell::cli::distributed {
+
+/// Starts MPI when this process was launched by mpirun (and snell has MPI); finalises it at exit.
+class Session {
+ public:
+  Session(int& argc, char**& argv);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+};
+
+/// This process's rank and the number of ranks (0 and 1 outside mpirun).
+int rank();
+int size();
+/// "with Open MPI" or "without MPI", for --version.
+const char* support();
+
+struct Job {
+  const scene::Scene& scene;
+  const accel::Accelerator& accelerator;
+  /// The options of a single-process render; tile_source and tile_done are set here.
+  render::RenderOptions options;
+  /// The tiles still to render, in order (rank 0's queue).
+  std::vector<render::Tile> tiles;
+  /// Rank 0: called for every finished tile, local or remote, once its pixels are in the image.
+  std::function<void(const render::Tile&)> tile_done;
+};
+
+/// Renders `job` over all ranks into `image` (meaningful on rank 0). Returns the statistics summed over
+/// ranks on rank 0, this rank's own elsewhere.
+render::RenderStats render(const Job& job, io::Image& image);
+
+}  // namespace snell::cli::distributed

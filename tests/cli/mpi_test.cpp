@@ -1,0 +1,84 @@
+// `mpirun -n 3 snell ...` (issue 11): the distributed image is pixel-identical to a single-process render,
+// and a rank that dies ends the job with an error instead of a hang. Skipped where snell was built without
+// MPI or mpirun is missing.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <thread>
+
+#include "run_command.hpp"
+#include "snell/io/image_file.hpp"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kMpirun = "mpirun --allow-run-as-root --oversubscribe -n 3 ";
+
+bool mpi_available() {
+  const auto version = test::run_command(std::string(SNELL_BINARY) + " --version");
+  return version.output.find("with Open MPI") != std::string::npos &&
+         test::run_command("command -v mpirun").code == 0;
+}
+
+class MpiTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!mpi_available()) GTEST_SKIP() << "snell built without MPI, or no mpirun";
+    dir_ = fs::temp_directory_path() / ("snell_mpi_test_" + std::to_string(getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// Renders `scene` alone and with three ranks (EXR: exact floats) and expects the same pixels.
+  void expect_identical(const fs::path& scene, const std::string& flags) {
+    const std::string args = " +I" + scene.string() + " " + flags + " --quiet +O";
+    const auto single = test::run_command(std::string(SNELL_BINARY) + args + (dir_ / "single.exr").string());
+    ASSERT_EQ(single.code, 0) << single.output;
+    const auto mpi = test::run_command(kMpirun + SNELL_BINARY + args + (dir_ / "mpi.exr").string());
+    ASSERT_EQ(mpi.code, 0) << mpi.output;
+    const io::Image a = io::read_image(dir_ / "single.exr"), b = io::read_image(dir_ / "mpi.exr");
+    EXPECT_EQ(a.rgb, b.rgb);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(MpiTest, ThreeRanksRenderTheShowcaseExactlyAsOneProcess) {
+  expect_identical(fs::path(SNELL_SOURCE_DIR) / "scenes/showcase.pov", "+W96 +H72 +A0.3 +J");
+}
+
+TEST_F(MpiTest, ThreeRanksRenderAConformanceSceneExactlyAsOneProcess) {
+  const fs::path scene = "/usr/share/doc/povray/examples/objects/blob.pov";
+  if (!fs::exists(scene)) GTEST_SKIP() << "povray-examples not installed";
+  expect_identical(scene, "+W80 +H60 +A0.3 +L/usr/share/povray-3.7/include");
+}
+
+TEST_F(MpiTest, AKilledRankEndsTheJobWithAnErrorNotAHang) {
+  const fs::path scene = fs::path(SNELL_SOURCE_DIR) / "scenes/showcase.pov";
+  const fs::path pid_file = dir_ / "mpirun.pid";
+  // Large enough to be still rendering when a rank is killed; `timeout` turns a hang into exit code 124.
+  const std::string command = "timeout 120 " + kMpirun + SNELL_BINARY + " +I" + scene.string() +
+                              " +W1600 +H1200 +A0.1 --quiet +O" + (dir_ / "out.png").string() +
+                              " & echo $! > " + pid_file.string() + "; wait $!";
+  std::thread killer([&] {
+    // Wait for the ranks (children of mpirun) to start rendering, then kill one.
+    std::this_thread::sleep_for(std::chrono::seconds(4));
+    // Anchored at the binary: only the ranks' command lines start with it (not mpirun's or the shells').
+    test::run_command("pkill -KILL -n -f '^" + std::string(SNELL_BINARY) + " .*" +
+                      (dir_ / "out.png").string() + "'");
+  });
+  const auto r = test::run_command(command);
+  killer.join();
+  EXPECT_NE(r.code, 0) << r.output;
+  EXPECT_NE(r.code, 124) << "the job hung after a rank died";
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+}  // namespace
+}  // namespace snell
