@@ -131,8 +131,9 @@ int render(CliOptions& o) {
   if (!o.quiet)
     for (const std::string& w : o.warnings) fmt::print(stderr, "snell: warning: {}\n", w);
 
-  // Load the image plugin while the scene is parsed and rendered (snell/io/oiio_plugin_abi.hpp).
-  if (!o.parse_only) io::preload_image_backend();
+  // Load the image plugin while the scene is parsed and rendered (snell/io/oiio_plugin_abi.hpp); PNG output
+  // does without it (a scene's image maps load it when they are parsed).
+  if (!o.parse_only && io::writes_through_plugin(o.output)) io::preload_image_backend();
   const auto t_parse = Clock::now();
   sdl::ParseOptions po;
   po.library_paths = o.library_paths;

@@ -50,6 +50,28 @@ TEST(ImageFileTest, SixteenBitAndExrKeepPrecision) {
   fs::remove(exr);
 }
 
+TEST(ImageFileTest, CoverageTravelsAsAlphaInPngAndExr) {
+  Image img(4, 3);
+  img.clear_alpha();
+  img.set(1, 2, {0.5, 0.25, 1.0});
+  img.set_alpha(1, 2, 1.0f);
+  for (const char* name : {"snell_alpha8.png", "snell_alpha16.png", "snell_alpha.exr"}) {
+    const fs::path path = fs::temp_directory_path() / name;
+    write_image(path, img, {Encoding{}, std::string(name).find("16") != std::string::npos ? 16 : 8});
+    const Image back = read_image(path);
+    ASSERT_TRUE(back.has_alpha()) << name;
+    EXPECT_EQ(back.alpha_at(1, 2), 1.0f) << name;
+    EXPECT_EQ(back.alpha_at(0, 0), 0.0f) << name;
+    // Unassociated: colours are not divided by alpha. PNG holds sRGB-encoded values, EXR linear ones.
+    const bool png = fs::path(name).extension() == ".png";
+    EXPECT_NEAR(png ? srgb_decode(back.at(1, 2).g) : back.at(1, 2).g, 0.25, 0.003) << name;
+    fs::remove(path);
+  }
+  img.alpha.assign(img.alpha.size(), 1.0f);
+  img.drop_alpha_if_covered();
+  EXPECT_FALSE(img.has_alpha());
+}
+
 TEST(ImageFileTest, ErrorsAreReported) {
   Image img(1, 1);
   EXPECT_THROW(write_image("/nonexistent-folder/x.png", img, {}), ImageIoError);

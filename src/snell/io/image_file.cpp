@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "snell/io/image_backend.hpp"
+#include "snell/io/png_writer.hpp"
 
 namespace snell::io {
 
@@ -43,6 +44,10 @@ std::vector<T> quantise(const Image& image, const Encoding& encoding, double max
 }
 
 }  // namespace
+
+bool writes_through_plugin(const fs::path& path) {
+  return lower_extension(path) != ".png";
+}
 
 bool is_supported_output(const fs::path& path) {
   const std::string ext = lower_extension(path);
@@ -82,11 +87,17 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
       data = bytes8.data();
     }
   }
-  const ImageBackend& backend = image_backend();
-  char why[512] = {};
   const int channels = image.has_alpha() ? 4 : 3;
-  if (backend.write(temp.c_str(), image.width, image.height, channels, type, data, ext == ".png", why,
-                    sizeof why) != 0) {
+  std::string why;
+  if (ext == ".png") {
+    why = write_png(temp, image.width, image.height, channels, options.bits == 16 ? 16 : 8, data, true);
+  } else {
+    char message[512] = {};
+    if (image_backend().write(temp.c_str(), image.width, image.height, channels, type, data, 0, message,
+                              sizeof message) != 0)
+      why = message[0] ? message : "unknown error";
+  }
+  if (!why.empty()) {
     std::error_code ignored;
     fs::remove(temp, ignored);
     throw ImageIoError("cannot write '" + path.string() + "': " + why);

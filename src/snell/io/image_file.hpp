@@ -30,6 +30,9 @@ void write_image(const std::filesystem::path& path, const Image& image, const Wr
 /// ImageIoError.
 Image read_image(const std::filesystem::path& path);
 
+/// Whether writing this format goes through the OpenImageIO plugin (all but PNG, which libpng writes).
+bool writes_through_plugin(const std::filesystem::path& path);
+
 /// Whether the extension names a format write_image supports (.png, .exr, .hdr; case-insensitive).
 bool is_supported_output(const std::filesystem::path& path);
 

@@ -16,8 +16,8 @@ enum SnellPixelType { kSnellUint8 = 0, kSnellUint16 = 1, kSnellFloat = 2 };
 using SnellOiioWrite = int (*)(const char* path, int width, int height, int channels, int pixel_type,
                                const void* pixels, int srgb_tag, char* error, size_t error_size);
 /// Reads an image as interleaved float RGBA (grey replicated; alpha 1 where the file has none) into a buffer
-/// from malloc that the caller frees with the plugin's SnellOiioFree. `*file_channels` receives the file's own
-/// channel count. Returns 0 on success.
+/// from malloc that the caller frees with the plugin's SnellOiioFree. `*file_channels` receives the file's
+/// own channel count. Returns 0 on success.
 using SnellOiioRead = int (*)(const char* path, int* width, int* height, int* file_channels, float** pixels,
                               char* error, size_t error_size);
 using SnellOiioFree = void (*)(float* pixels);
