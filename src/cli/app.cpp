@@ -4,6 +4,7 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -63,7 +64,9 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   render->add_flag("--quiet", o.quiet, "no progress, warnings or statistics");
   render->add_flag("--stats", o.stats, "print statistics even with --quiet");
-  render->add_flag("--parse-only", o.parse_only, "parse and build the scene, print a summary, render nothing");
+  render->add_flag("--parse-only", o.parse_only,
+                   "parse and build the scene, print a summary, render nothing");
+  render->add_option("--max-loop", o.max_loop, "most iterations of one #while or #for (default 10 million)");
   return app;
 }
 
@@ -90,11 +93,23 @@ int render(CliOptions& o) {
   po.image_width = o.width;
   po.image_height = o.height;
   po.declares = o.declares;
+  po.max_while_iterations = o.max_loop;
+  // One frame of the animation range: its number and clock (POV-Ray's animationprocessing.cpp rules).
+  po.initial_frame = o.initial_frame;
+  po.final_frame = std::max(o.final_frame, o.initial_frame);
+  po.initial_clock = o.initial_clock;
+  po.final_clock = o.final_clock;
+  po.cyclic = o.cyclic;
+  po.clock_on = po.final_frame > po.initial_frame;
+  po.frame_number =
+      po.clock_on ? std::clamp(o.frame > 0 ? o.frame : o.initial_frame, po.initial_frame, po.final_frame) : 0;
+  po.clock = po.clock_on ? po.initial_clock + po.clock_delta() * (po.frame_number - po.initial_frame)
+                         : po.initial_clock;
   const scene::Scene scene = sdl::parse_scene_file(o.input, po);
   const double parse_s = seconds_since(t_parse);
   if (o.parse_only) {
-    fmt::print("snell: parsed {}: {} objects, {} lights, parse {:.3f}s\n", o.input.string(), scene.objects.size(),
-               scene.lights.size(), parse_s);
+    fmt::print("snell: parsed {}: {} objects, {} lights, parse {:.3f}s\n", o.input.string(),
+               scene.objects.size(), scene.lights.size(), parse_s);
     return kOk;
   }
 
