@@ -140,3 +140,28 @@ TEST(SdlExpressions, VectorMayEndWithAComma) {
 
 }  // namespace
 }  // namespace snell::sdl
+
+namespace snell::sdl {
+namespace {
+
+TEST(SdlLeniency, OptionalCommasAsPovRayAccepts) {
+  // Macro parameters without a comma or with a trailing one (shapes3.inc), array items across lines
+  // without commas (tiling.pov), vectors side by side (grenadine's lemon.inc), a stray '#'.
+  const std::string s =
+      "#macro Sum(A B, C,) A + B + C #end\n"
+      "#declare Arr = array[4] { <1, 2> <3, 4>, 5\n 6 #\n }";
+  EXPECT_DOUBLE_EQ(value_of(s, "Sum(1, 2, 3) + Arr[0].y + Arr[1].x + Arr[3]"), 6 + 2 + 3 + 6);
+  EXPECT_NE(test::error_of("#declare Arr = array[3] { 1, 2 }").find("has 2 elements here, expected 3"),
+            std::string::npos);
+}
+
+TEST(SdlLeniency, LightSourceStartsFromADeclaredLight) {
+  const auto scene =
+      test::parse("#declare L = light_source { <1, 2, 3> rgb 0.5 }\nlight_source { L translate x }");
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_EQ(scene.lights[0].position, math::Vec3(2, 2, 3));
+  EXPECT_EQ(scene.lights[0].color, math::Color(0.5));
+}
+
+}  // namespace
+}  // namespace snell::sdl

@@ -454,17 +454,14 @@ void Parser::directive_macro(const Token& d) {
   macro->name = name.text;
   macro->where = name.where;
   if (!raw_next().is_symbol("(")) fail(name.where, "expected '(' after the macro name");
-  if (!raw_peek().is_symbol(")")) {
-    for (;;) {
-      const Token p = raw_next();
-      if (p.kind != Token::Kind::identifier) fail(p.where, "expected a parameter name");
-      macro->parameters.push_back(p.text);
-      const Token sep = raw_next();
-      if (sep.is_symbol(")")) break;
-      if (!sep.is_symbol(",")) fail(sep.where, "expected ',' or ')' in the macro's parameter list");
-    }
-  } else {
-    raw_next();
+  // Commas between parameters are optional and one may end the list, as POV-Ray's Parse_Comma allows
+  // (shapes3.inc has both `Border_Scale_y_ Merge_On,` and `Merge_, )`).
+  for (;;) {
+    const Token p = raw_next();
+    if (p.is_symbol(")")) break;
+    if (p.kind != Token::Kind::identifier) fail(p.where, "expected a parameter name or ')'");
+    macro->parameters.push_back(p.text);
+    if (raw_peek().is_symbol(",")) raw_next();
   }
   macro->tokens = frames_.back().tokens;
   macro->body_start = frames_.back().pos;
