@@ -23,7 +23,13 @@ passed=0 total=0
 while IFS= read -r scene; do
   total=$((total + 1))
   dir=$(dirname "$scene") file=$(basename "$scene")
-  if out=$(cd "$dir" && timeout 20 "$bin" --parse-only "+I$file" "+L$include" +W320 +H240 --quiet 2>&1); then
+  # A scene's own .ini (same name, naming the scene) supplies its animation frame range, as POV-Ray's
+  # users run it (the portfolio scenes need frame_number from theirs); its first frame is parsed.
+  ini=()
+  if [[ -f $dir/${file%.pov}.ini ]] && grep -qiE "^input_file_name *= *$file" "$dir/${file%.pov}.ini"; then
+    ini=("${file%.pov}.ini")
+  fi
+  if out=$(cd "$dir" && timeout 20 "$bin" --parse-only "${ini[@]}" "+I$file" "+L$include" +W320 +H240 --quiet 2>&1); then
     passed=$((passed + 1))
     ((list)) && echo "ok   ${scene#"$work/examples/"}"
   else

@@ -4,6 +4,7 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -107,6 +108,7 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
                    "finish an interrupted render from its resume file (POV-Ray +C)");
   render->add_option("--checkpoint", o.checkpoint_seconds,
                      "write the resume file every S seconds while rendering");
+  render->add_option("--max-loop", o.max_loop, "most iterations of one #while or #for (default 10 million)");
   return app;
 }
 
@@ -141,6 +143,18 @@ int render(CliOptions& o) {
   po.image_width = o.width;
   po.image_height = o.height;
   po.declares = o.declares;
+  po.max_while_iterations = o.max_loop;
+  // One frame of the animation range: its number and clock (POV-Ray's animationprocessing.cpp rules).
+  po.initial_frame = o.initial_frame;
+  po.final_frame = std::max(o.final_frame, o.initial_frame);
+  po.initial_clock = o.initial_clock;
+  po.final_clock = o.final_clock;
+  po.cyclic = o.cyclic;
+  po.clock_on = po.final_frame > po.initial_frame;
+  po.frame_number =
+      po.clock_on ? std::clamp(o.frame > 0 ? o.frame : o.initial_frame, po.initial_frame, po.final_frame) : 0;
+  po.clock = po.clock_on ? po.initial_clock + po.clock_delta() * (po.frame_number - po.initial_frame)
+                         : po.initial_clock;
   const scene::Scene scene = sdl::parse_scene_file(o.input, po);
   const double parse_s = seconds_since(t_parse);
   if (o.parse_only) {

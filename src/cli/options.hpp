@@ -43,6 +43,16 @@ struct CliOptions {
   double checkpoint_seconds = 0;
   std::vector<std::filesystem::path> library_paths;
   std::map<std::string, double> declares;
+  /// Animation range (+KFI +KFF +KI +KF, ini Initial_Frame...) and the one frame rendered (+SF,
+  /// Subset_Start_Frame; 0: the initial frame). snell renders one frame per run.
+  int initial_frame = 1;
+  int final_frame = 1;
+  double initial_clock = 0;
+  double final_clock = 1;
+  int frame = 0;
+  bool cyclic = false;
+  /// `--max-loop N`: the most iterations one #while or #for may run before the scene is stopped.
+  long max_loop = 10'000'000;
   /// Warnings found while reading the command line (unknown or unsupported flags), printed unless quiet.
   std::vector<std::string> warnings;
 };
@@ -50,6 +60,12 @@ struct CliOptions {
 /// POV-Ray style: `+Iscene.pov +Oout.png +W640 +H480 +A0.3 +R3 +J +Ldir -D +WT4`, plus snell's
 /// `--quiet`, `--stats`, `--threads N`, `--accel NAME`. Unknown flags become warnings. Throws UsageError.
 CliOptions parse_pov_arguments(const std::vector<std::string>& args);
+
+/// Replaces each ini file among `args` (`scene.ini`, `+Iscene.ini`) by its lines. Throws UsageError.
+std::vector<std::string> expand_ini_files(const std::vector<std::string>& args, int depth = 0);
+
+/// Applies one ini-style `Key=Value` option (also accepted on the command line); false when unknown.
+bool apply_ini_option(CliOptions& options, const std::string& key, const std::string& value);
 
 /// Checks values common to both syntaxes and fills in the default output name. Throws UsageError.
 void validate(CliOptions& options);

@@ -38,15 +38,16 @@ bool starts_with(const std::string& s, const std::string& prefix) {
 }
 
 /// POV-Ray switches that snell knows but does not implement: accepted with a warning.
-constexpr const char* kUnsupported[] = {"Q",  "AM",  "AG",  "UA", "GA", "GD",  "GF", "GR", "GS", "GW",
-                                        "K",  "KFI", "KFF", "KI", "KF", "KC",  "SF", "EF", "UV", "UR",
-                                        "UF", "UD",  "UO",  "MB", "MV", "RVP", "HT", "HN", "HI"};
+constexpr const char* kUnsupported[] = {"Q",  "AM", "AG", "UA",  "GA", "GD", "GF", "GR",
+                                        "GS", "GW", "K",  "EF",  "UV", "UR", "UF", "UD",
+                                        "UO", "MB", "MV", "RVP", "HT", "HN", "HI"};
 /// Known switches without an effect on a batch render: accepted silently.
 constexpr const char* kIgnored[] = {"D", "P", "V", "X", "GP"};
 
 }  // namespace
 
-CliOptions parse_pov_arguments(const std::vector<std::string>& args) {
+CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
+  const std::vector<std::string> args = expand_ini_files(command_line);
   CliOptions o;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
@@ -73,6 +74,9 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& args) {
         o.resume = true;
       } else if (name == "--checkpoint") {
         o.checkpoint_seconds = parse_double(name, eq == std::string::npos ? next_value(name) : value);
+      } else if (name == "--max-loop") {
+        o.max_loop = parse_int(name, eq == std::string::npos ? next_value(name) : value);
+        if (o.max_loop < 1) throw UsageError("--max-loop needs a positive number");
       } else if (name == "--accel") {
         o.accel = eq == std::string::npos ? next_value(name) : value;
       } else {
@@ -82,12 +86,8 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& args) {
     }
     if (arg.size() < 2 || (arg[0] != '+' && arg[0] != '-')) {
       const auto eq = arg.find('=');
-      if (eq != std::string::npos && upper(arg.substr(0, eq)) == "DECLARE") {
-        const std::string rest = arg.substr(eq + 1);
-        const auto eq2 = rest.find('=');
-        if (eq2 == std::string::npos || eq2 == 0)
-          throw UsageError("Declare needs NAME=value, got '" + rest + "'");
-        o.declares[rest.substr(0, eq2)] = parse_double("Declare", rest.substr(eq2 + 1));
+      if (eq != std::string::npos && apply_ini_option(o, arg.substr(0, eq), arg.substr(eq + 1))) {
+        // Width=, Declare=, Initial_Frame=...: ini-style options, from an ini file or typed
       } else if (eq != std::string::npos) {
         o.warnings.push_back("ini-style option '" + arg + "' is not supported; ignored");
       } else if (o.input.empty()) {
@@ -118,6 +118,18 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& args) {
       o.start_col = rest_after(2);
     } else if (starts_with(key, "EC") && key.size() > 2) {
       o.end_col = rest_after(2);
+    } else if (key == "KC") {
+      o.cyclic = on;
+    } else if (starts_with(key, "KFI")) {
+      o.initial_frame = parse_int(arg, rest_after(3));
+    } else if (starts_with(key, "KFF")) {
+      o.final_frame = parse_int(arg, rest_after(3));
+    } else if (starts_with(key, "KI") && key.size() > 2) {
+      o.initial_clock = parse_double(arg, rest_after(2));
+    } else if (starts_with(key, "KF") && key.size() > 2) {
+      o.final_clock = parse_double(arg, rest_after(2));
+    } else if (starts_with(key, "SF") && key.size() > 2) {
+      o.frame = parse_int(arg, rest_after(2));
     } else if (starts_with(key, "WT")) {
       o.threads = parse_int(arg, rest_after(2));
     } else if (key[0] == 'W' && key.size() > 1) {

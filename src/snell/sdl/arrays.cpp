@@ -29,7 +29,10 @@ std::shared_ptr<Array> Parser::parse_array() {
     array->sizes.push_back(static_cast<int>(size));
   }
   if (array->sizes.empty()) fail(where, "expected '[size]' after array");
-  if (element_count(array->sizes) > 100'000'000) fail(where, "array too large");
+  // Bounded memory: at most 1 GiB of element slots, however large the sizes a scene asks for.
+  constexpr size_t kMaxElements = (size_t{1} << 30) / sizeof(std::optional<Value>);
+  if (element_count(array->sizes) > kMaxElements)
+    fail(where, "array too large (more than " + std::to_string(kMaxElements) + " elements)");
   array->items.resize(element_count(array->sizes));
   if (!peek_after_value().is_symbol("{")) return array;
 
@@ -40,9 +43,16 @@ std::shared_ptr<Array> Parser::parse_array() {
     expect("{", "array initializer");
     const int count = array->sizes[dim];
     for (int i = 0; i < count; ++i) {
-      if (i > 0) expect(",", "array initializer");
+      // Commas are optional (POV-Ray's Parse_Comma): textures/patterns/tiling.pov breaks lines without.
+      if (i > 0) accept(",");
+      if (peek().is_symbol("}"))
+        fail(peek().where, "array initializer has " + std::to_string(i) + " elements here, expected " +
+                               std::to_string(count));
       if (dim + 1 < array->sizes.size())
         self(self, dim + 1);
+      else if (starts_numeric() && !starts_string())
+        // Arithmetic only, as for any item argument: `<1,2> <3,4>` is two vectors, not a comparison.
+        array->items[next++] = Value{parse_argument_numeric()};
       else
         array->items[next++] = parse_rvalue();
     }

@@ -1,11 +1,14 @@
 // Expressions: floats, 2-5 component vectors and colours with POV-Ray's promotion rules, strings, and the
 // built-in constants and functions (POV-Ray 3.7 reference, "Float Expressions", "Vector Expressions",
 // "Color Expressions", "String Expressions").
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "snell/math/constants.hpp"
 #include "snell/sdl/parser.hpp"
+#include "snell/sdl/string_functions.hpp"
+#include "snell/texture/warp.hpp"
 
 namespace snell::sdl {
 
@@ -36,10 +39,6 @@ Numeric combine(const Numeric& a, const Numeric& b, Op op) {
 }
 
 using FunctionPtr = std::shared_ptr<const function::Function>;
-
-bool is_string_function(const std::string& n) {
-  return n == "concat" || n == "str" || n == "chr" || n == "substr" || n == "strupr" || n == "strlwr";
-}
 
 }  // namespace
 
@@ -113,7 +112,9 @@ bool Parser::starts_numeric() {
   if (t.kind != Token::Kind::identifier) return false;
   if (const Value* v = lookup(t.text))
     return std::holds_alternative<Numeric>(v->data) ||
-           std::holds_alternative<std::shared_ptr<const function::Function>>(v->data);
+           std::holds_alternative<std::shared_ptr<const function::Function>>(v->data) ||
+           std::holds_alternative<std::shared_ptr<const Spline>>(v->data);
+  if (is_numeric_string_function(t.text)) return true;
   static const char* const words[] = {"x",
                                       "y",
                                       "z",
@@ -121,6 +122,7 @@ bool Parser::starts_numeric() {
                                       "u",
                                       "v",
                                       "pi",
+                                      "tau",
                                       "true",
                                       "false",
                                       "on",
@@ -133,6 +135,15 @@ bool Parser::starts_numeric() {
                                       "image_height",
                                       "frame_number",
                                       "clock_delta",
+                                      "clock_on",
+                                      "trace",
+                                      "vturbulence",
+                                      "min_extent",
+                                      "max_extent",
+                                      "dimension_size",
+                                      "dimensions",
+                                      "initial_frame",
+                                      "final_frame",
                                       "rgb",
                                       "rgbf",
                                       "rgbt",
@@ -199,9 +210,11 @@ Value Parser::parse_rvalue() {
   if (starts_string()) return Value{parse_string()};
   if (t.kind == Token::Kind::identifier) {
     const Token word = t;
-    if (const Value* v = lookup(word.text); v && std::holds_alternative<FunctionPtr>(v->data)) {
-      // A function name not followed by `(` is the function itself (a macro argument, `#declare G = F`);
-      // with `(` it is a call inside a float expression.
+    if (const Value* v = lookup(word.text);
+        v && (std::holds_alternative<FunctionPtr>(v->data) ||
+              std::holds_alternative<std::shared_ptr<const Spline>>(v->data))) {
+      // A function or spline name not followed by `(` is the function itself (a macro argument, `#declare G =
+      // F`); with `(` it is a call inside a float expression.
       const Frame& f = frames_.back();
       if (f.pos + 1 >= f.tokens->size() || !(*f.tokens)[f.pos + 1].is_symbol("(")) {
         Value copy = *v;
@@ -236,6 +249,10 @@ Value Parser::parse_rvalue() {
     if (word.text == "texture") {
       raw_next();
       return Value{parse_layered_textures()};
+    }
+    if (word.text == "spline") {
+      raw_next();
+      return Value{parse_spline_block()};
     }
     if (word.text == "array") {
       raw_next();
@@ -439,7 +456,8 @@ Numeric Parser::parse_primary() {
       if (r.size == 5) fail(where, "a vector has at most 5 components");
       r.v[static_cast<size_t>(r.size++)] = c.x();
       if (accept(">")) break;
-      accept(",");  // POV-Ray's Parse_Comma: `<A B C>` is a vector too
+      // POV-Ray's Parse_Comma: `<A B C>` is a vector too, and a comma may end it (`<1, 2, 3,>`).
+      if (accept(",") && accept(">")) break;
     }
     in_vector_ = saved;
     if (r.size < 2) fail(t.where, "a vector needs at least 2 components");
@@ -460,6 +478,11 @@ Numeric Parser::parse_primary() {
       const FunctionPtr callee = *f;  // the call may run macros that change the symbol table
       raw_next();
       return call_function(t, *callee);
+    }
+    if (const auto* s = std::get_if<std::shared_ptr<const Spline>>(&v->data)) {
+      const auto spline = *s;
+      raw_next();
+      return call_spline(t, *spline);
     }
     fail(t.where, "expected a float, vector or color, but '" + w + "' is a " + v->type_name());
   }
@@ -487,13 +510,17 @@ Numeric Parser::parse_primary() {
     return Numeric{{0, 1, 0, 0, 0}, 2, false};
   }
   if (w == "pi") return constant(math::kPi);
+  if (w == "tau") return constant(2 * math::kPi);
   if (w == "true" || w == "on" || w == "yes") return constant(1);
   if (w == "false" || w == "off" || w == "no") return constant(0);
   if (w == "version") return constant(version_);
   if (w == "clock") return constant(options_.clock);
-  if (w == "clock_delta") return constant(0);
-  if (w == "initial_clock") return constant(0);
-  if (w == "final_clock") return constant(options_.clock);
+  if (w == "clock_delta") return constant(options_.clock_delta());
+  if (w == "clock_on") return constant(options_.clock_on ? 1 : 0);
+  if (w == "initial_clock") return constant(options_.initial_clock);
+  if (w == "final_clock") return constant(options_.final_clock);
+  if (w == "initial_frame") return constant(options_.initial_frame);
+  if (w == "final_frame") return constant(options_.final_frame);
   if (w == "frame_number") return constant(options_.frame_number);
   if (w == "image_width") return constant(options_.image_width);
   if (w == "image_height") return constant(options_.image_height);
@@ -505,7 +532,7 @@ Numeric Parser::parse_primary() {
     expect("(", "defined()");
     const Token name = raw_next();
     expect(")", "defined()");
-    return Numeric::of(lookup(name.text) ? 1 : 0);
+    return Numeric::of(lookup(name.text) || user_files_.count(name.text) ? 1 : 0);
   }
   raw_next();
   return parse_function(t);
@@ -583,25 +610,21 @@ Numeric Parser::parse_color_keywords() {
 Numeric Parser::parse_function(const Token& name) {
   const std::string& f = name.text;
   static const char* const functions[] = {
-      "abs",        "min",   "max",    "pow",     "sqrt",         "sqr",    "exp",     "log",     "ln",
-      "sin",        "cos",   "tan",    "sinh",    "cosh",         "tanh",   "asin",    "acos",    "atan",
-      "atan2",      "floor", "ceil",   "int",     "mod",          "div",    "radians", "degrees", "vlength",
-      "vnormalize", "vdot",  "vcross", "vrotate", "vaxis_rotate", "select", "strlen",  "val",     "asc"};
+      "abs",  "min",    "max",     "pow",          "sqrt",    "sqr",        "exp",
+      "log",  "ln",     "sin",     "cos",          "tan",     "sinh",       "cosh",
+      "tanh", "asin",   "acos",    "atan",         "atan2",   "floor",      "ceil",
+      "int",  "mod",    "div",     "radians",      "degrees", "vlength",    "vnormalize",
+      "vdot", "vcross", "vrotate", "vaxis_rotate", "select",  "vturbulence"};
   if (f == "dimensions" || f == "dimension_size") return parse_array_function(name);
   if (f == "seed" || f == "rand") return parse_random_function(name);
+  if (is_numeric_string_function(f)) return parse_string_query(name);
+  if (f == "trace" || f == "min_extent" || f == "max_extent") return parse_object_query(name);
   bool known = false;
   for (const char* k : functions) known = known || f == k;
   if (!known) fail(name.where, "unknown identifier '" + f + "'");
   expect("(", ("function " + f).c_str());
   std::vector<Numeric> args;
   std::vector<scene::SourceLocation> where;
-  if (f == "strlen" || f == "val" || f == "asc") {
-    const std::string s = parse_string();
-    expect(")", f.c_str());
-    if (f == "strlen") return Numeric::of(static_cast<double>(s.size()));
-    if (f == "asc") return Numeric::of(s.empty() ? 0 : static_cast<unsigned char>(s[0]));
-    return Numeric::of(std::atof(s.c_str()));
-  }
   if (!peek().is_symbol(")")) {
     for (;;) {
       where.push_back(peek().where);
@@ -674,71 +697,17 @@ Numeric Parser::parse_function(const Token& name) {
     domain(length(vec(1)) > 0, "zero-length axis");
     return of_vec(math::Transform::rotate_axis_degrees(normalize(vec(1)), a(2)).vector(vec(0)));
   }
+  if (f == "vturbulence") {
+    // vturbulence(Lambda, Omega, Octaves, V): the displacement a turbulence warp would apply at V.
+    need(4);
+    return of_vec(texture::vector_turbulence(vec(3), std::clamp(static_cast<int>(a(2)), 1, 10), a(1), a(0)));
+  }
   if (f == "select") {
     if (args.size() == 3) return a(0) < 0 ? args[1] : args[2];
     need(4);
     return a(0) < 0 ? args[1] : (a(0) == 0 ? args[2] : args[3]);
   }
   fail(name.where, "unknown identifier '" + f + "'");
-}
-
-std::string Parser::parse_string() {
-  const Token t = next();
-  if (t.kind == Token::Kind::string) return t.text;
-  if (t.kind != Token::Kind::identifier) fail(t.where, "expected a string");
-  if (const Value* v = lookup(t.text)) {
-    if (const auto* s = std::get_if<std::string>(&v->data)) return *s;
-    fail(t.where, "expected a string, but '" + t.text + "' is a " + v->type_name());
-  }
-  const std::string& f = t.text;
-  if (!is_string_function(f)) fail(t.where, "expected a string, found '" + f + "'");
-  expect("(", f.c_str());
-  std::string result;
-  if (f == "concat") {
-    for (;;) {
-      result += parse_string();
-      if (accept(")")) break;
-      expect(",", "concat");
-    }
-    return result;
-  }
-  if (f == "str") {
-    const double value = parse_float();
-    expect(",", "str");
-    const int width = static_cast<int>(parse_float());
-    expect(",", "str");
-    const int precision = static_cast<int>(parse_float());
-    expect(")", "str");
-    // POV-Ray: a negative precision means the default (6); a width of 0 pads nothing.
-    char buffer[128];
-    const int p = precision < 0 ? 6 : std::min(precision, 40);
-    const int w = std::max(-40, std::min(width, 40));
-    std::snprintf(buffer, sizeof buffer, w < 0 ? "%0*.*f" : "%*.*f", std::abs(w), p, value);
-    return buffer;
-  }
-  if (f == "chr") {
-    const double c = parse_float();
-    expect(")", "chr");
-    return std::string(1, static_cast<char>(static_cast<int>(c)));
-  }
-  if (f == "substr") {
-    const std::string s = parse_string();
-    expect(",", "substr");
-    const scene::SourceLocation where = peek().where;
-    const int start = static_cast<int>(parse_float());
-    expect(",", "substr");
-    const int count = static_cast<int>(parse_float());
-    expect(")", "substr");
-    if (start < 1 || count < 0 || static_cast<size_t>(start - 1 + count) > s.size())
-      fail(where, "substr range outside the string");
-    return s.substr(static_cast<size_t>(start - 1), static_cast<size_t>(count));
-  }
-  result = parse_string();
-  expect(")", f.c_str());
-  for (char& c : result)
-    c = static_cast<char>(f == "strupr" ? std::toupper(static_cast<unsigned char>(c))
-                                        : std::tolower(static_cast<unsigned char>(c)));
-  return result;
 }
 
 }  // namespace snell::sdl

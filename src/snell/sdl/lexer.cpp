@@ -53,8 +53,9 @@ class Lexer {
       } else if (c == '#') {
         advance();
         skip_space_and_comments();
-        if (pos_ >= text_.size() || !is_ident_start(text_[pos_]))
-          throw LocatedError{t.where, "expected a directive name after '#'"};
+        // A '#' with no directive name after it is ignored, as POV-Ray does (language/image_size.pov
+        // has `look_at <0,2,0>#` before its closing brace).
+        if (pos_ >= text_.size() || !is_ident_start(text_[pos_])) continue;
         t.kind = Token::Kind::directive;
         t.text = read_identifier();
       } else {

@@ -358,9 +358,16 @@ ParsedObject Parser::parse_light(const Token& keyword) {
   o.where = keyword.where;
   expect("{", "light_source");
   scene::Light light;
-  light.position = parse_vector();
-  accept(",");
-  light.color = parse_color().rgb;
+  // `light_source { DeclaredLight modifiers }` (radiosity/cornell.pov) starts from a copy.
+  if (auto declared = take_declared<ParsedObject>()) {
+    if (!declared->light) fail(o.where, "'" + declared->name + "' is an object, not a light_source");
+    light = *declared->light;
+    o = std::move(*declared);
+  } else {
+    light.position = parse_vector();
+    accept(",");
+    light.color = parse_color().rgb;
+  }
   bool radius_set = false, falloff_set = false;
   for (;;) {
     const Token t = peek();

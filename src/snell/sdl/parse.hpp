@@ -18,8 +18,23 @@ struct ParseOptions {
   /// Values of `image_width` / `image_height`.
   int image_width = 320;
   int image_height = 240;
+  /// Animation (POV-Ray's Initial_Frame, Final_Frame, Initial_Clock, Final_Clock options): the frame
+  /// parsed and the range it belongs to. `clock_on` is true when an animation was asked for.
   double clock = 0;
   int frame_number = 0;
+  bool clock_on = false;
+  int initial_frame = 1;
+  int final_frame = 1;
+  double initial_clock = 0;
+  double final_clock = 1;
+  /// Cyclic_Animation (+KC): the last frame stops one step short of final_clock, so a loop repeats
+  /// seamlessly.
+  bool cyclic = false;
+  /// The clock step between frames; POV-Ray uses 1 for a single frame (its animationprocessing.cpp).
+  double clock_delta() const {
+    if (final_frame == initial_frame) return 1.0;
+    return (final_clock - initial_clock) / double(final_frame - initial_frame + (cyclic ? 1 : 0));
+  }
   /// `Declare=NAME=value` from the command line / ini files.
   std::map<std::string, double> declares;
   /// Receives each warning and `#debug` text, formatted; null prints to stderr.

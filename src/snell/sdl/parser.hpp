@@ -4,6 +4,7 @@
 // The member functions are spread over files by concern: token_source.cpp (token stack, directives),
 // expressions.cpp (floats, vectors, colours, strings), materials.cpp, objects.cpp, scene_items.cpp.
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -38,6 +39,11 @@ class Parser {
     double saved_version = 0;
     /// A token read ahead of `pos` (an evaluated array element), returned before the stream's next one.
     std::optional<Token> injected;
+    /// A macro call: the index of its scope in scopes_, its parameters, and those bound to a caller's
+    /// lone identifier (parameter, caller's name), whose values are copied back when the macro ends.
+    size_t scope = 0;
+    std::vector<std::string> parameters;
+    std::vector<std::pair<std::string, std::string>> by_reference;
   };
   struct Cond {
     enum class Kind { if_, while_, switch_, macro_call, for_ };
@@ -75,6 +81,8 @@ class Parser {
   void directive_while(const Token& directive);
   /// `#for (I, start, end [, step])`: a counted loop (POV-Ray 3.7 reference, "The #for Directive").
   void directive_for(const Token& directive);
+  /// `#break`: leaves the innermost #switch, #while or #for.
+  void directive_break(const Token& directive);
   /// `#default { texture {..} | pigment {..} | finish {..} }`.
   void directive_default(const Token& directive);
   void directive_switch(const Token& directive);
@@ -88,6 +96,29 @@ class Parser {
   /// Skips a `{ ... }` block whose `{` is next.
   void skip_block(const std::string& what);
   void check_frame_end();
+
+  // ---- user files (file_io.cpp) ----
+  /// A file opened by `#fopen`: written through `output`, or read from its lexed tokens.
+  struct UserFile {
+    std::filesystem::path path;
+    std::shared_ptr<std::ofstream> output;
+    std::shared_ptr<const std::vector<Token>> input;
+    size_t pos = 0;
+  };
+  /// Where a user file named `name` may be opened: the scene's folder or the temporary folder
+  /// (reading also the library paths); anything else is an error.
+  std::filesystem::path user_file_path(const std::string& name, const Token& where, bool writing);
+  std::vector<std::filesystem::path> user_file_roots(bool writing) const;
+  std::optional<std::filesystem::path> find_user_file(const std::string& name, bool writing) const;
+  /// `file_exists(name)`: whether the scene could #fopen it for reading.
+  bool readable_user_file(const std::string& name) const;
+  void directive_fopen(const Token& directive);
+  void directive_fclose(const Token& directive);
+  void directive_read(const Token& directive);
+  void directive_write(const Token& directive);
+  UserFile& user_file(const Token& handle);
+  /// The next float, vector or string of a data file; nullopt at its end.
+  std::optional<Value> read_user_value(UserFile& file);
 
   // ---- arrays (arrays.cpp) ----
   /// `array[d1][d2]... [{ items }]` after `array`.
@@ -137,6 +168,11 @@ class Parser {
   /// A float or vector, promoted to a colour (POV-Ray's colour expression with rgb/red/... keywords).
   material::Rgbft parse_color();
   std::string parse_string();
+  // ---- strings (strings.cpp) ----
+  /// The function after its name and `(`: concat, str, vstr, chr, substr, strupr, strlwr, datetime.
+  std::string parse_string_function(const Token& name);
+  /// strlen, strcmp, val, asc, file_exists: numbers computed from strings.
+  Numeric parse_string_query(const Token& name);
   bool parse_bool_optional(bool if_absent);
   bool starts_string();
   bool starts_numeric();
@@ -159,6 +195,19 @@ class Parser {
   void expect(const char* symbol, const char* context);
   Token expect_identifier(const char* context);
   bool accept(const char* symbol);
+
+  // ---- object queries (object_queries.cpp) ----
+  /// `trace(...)`, `min_extent(...)`, `max_extent(...)` after the function's name.
+  Numeric parse_object_query(const Token& name);
+  ParsedObject parse_object_argument(const char* function_name);
+  /// Sets an existing identifier where it lives, or declares a global one (#read, trace's normal).
+  void assign(const std::string& name, Value value);
+
+  // ---- splines (spline_block.cpp) ----
+  /// `{ [Spline] [linear_spline|quadratic_spline|cubic_spline|natural_spline] t, value ... }`.
+  std::shared_ptr<const Spline> parse_spline_block();
+  /// `(t [, kind])` after a spline's name: its value there.
+  Numeric call_spline(const Token& name, const Spline& spline);
 
   // ---- user functions (function_compiler.cpp) ----
   /// `[(params)] { body }` after the `function` keyword (also for isosurface's `function { ... }`).
@@ -227,6 +276,7 @@ class Parser {
   /// `seed(n)` streams, indexed by the float `seed` returns.
   std::vector<math::Pcg32> random_streams_;
   std::vector<std::map<std::string, Value>> scopes_;
+  std::map<std::string, UserFile> user_files_;
   int macro_depth_ = 0;
   /// Depth of recursive descent (expressions, objects, pigments, textures): hostile input such as 100000
   /// opening parentheses or 5000 nested unions gives a ParseError instead of a stack overflow.

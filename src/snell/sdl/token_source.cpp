@@ -1,5 +1,6 @@
 // The token source: a stack of token vectors (the scene file, include files, macro bodies) that the
 // directives push, pop and rewind. Each file is lexed once; #while loops and macro calls replay tokens.
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -193,7 +194,7 @@ void Parser::handle_directive(const Token& d) {
     expect("(", "#ifdef");
     const Token name = raw_next();
     if (name.kind != Token::Kind::identifier) fail(name.where, "expected an identifier in #" + n);
-    bool defined = lookup(name.text) != nullptr;
+    bool defined = lookup(name.text) != nullptr || user_files_.count(name.text) > 0;
     if (raw_peek().is_symbol("[")) defined = array_element_is_set(name);  // `#ifdef (A[i])`
     expect(")", "#ifdef");
     return directive_if(d, n == "ifdef" ? defined : !defined);
@@ -209,13 +210,7 @@ void Parser::handle_directive(const Token& d) {
     parse_numeric();
     return;
   }
-  if (n == "break") {
-    if (conds_.empty() || conds_.back().kind != Cond::Kind::switch_)
-      fail(d.where, "#break is only supported inside #switch");
-    skip_to({"end"}, d);
-    conds_.pop_back();
-    return;
-  }
+  if (n == "break") return directive_break(d);
   if (n == "macro") return directive_macro(d);
   if (n == "include") return directive_include(d);
   if (n == "version") {
@@ -234,6 +229,10 @@ void Parser::handle_directive(const Token& d) {
   }
   if (n == "default") return directive_default(d);
   if (n == "for") return directive_for(d);
+  if (n == "fopen") return directive_fopen(d);
+  if (n == "fclose") return directive_fclose(d);
+  if (n == "read") return directive_read(d);
+  if (n == "write") return directive_write(d);
   fail(d.where, "unknown directive #" + n);
 }
 
@@ -252,6 +251,7 @@ void Parser::directive_declare(const Token& d, bool local) {
   for (const char* r : reserved)
     if (name.text == r) fail(name.where, "'" + name.text + "' is a reserved word and cannot be declared");
   if (raw_peek().is_symbol("[")) return declare_array_element(name, local);
+  const size_t scope = scopes_.size() - 1;
   const Token eq = raw_next();
   if (!eq.is_symbol("=")) fail(eq.where, "expected '=' after #" + d.text + " " + name.text);
   Value value = parse_rvalue();
@@ -260,7 +260,12 @@ void Parser::directive_declare(const Token& d, bool local) {
     *array = std::make_shared<Array>(**array);
   if (auto* object = std::get_if<ParsedObject>(&value.data); object && object->name.empty())
     object->name = name.text;
-  declare(name.text, std::move(value), local);
+  // #local lands in the scope where the directive was written, even when the value came from a macro
+  // whose #end has not run yet (`#local M = Matrix_Trans(...)`, `#local P = FindTmp(...)` ending `Q;`).
+  if (local)
+    scopes_[scope][name.text] = std::move(value);
+  else
+    declare(name.text, std::move(value), false);
   if (peek_after_value().is_symbol(";")) raw_next();
 }
 
@@ -331,6 +336,27 @@ void Parser::directive_end(const Token& d) {
       for_loops_.pop_back();
       return;
     }
+  }
+}
+
+void Parser::directive_break(const Token& d) {
+  // Leaves the innermost #switch, #while or #for, closing the #if blocks open inside it (POV-Ray 3.7
+  // reference, "The #break Directive").
+  size_t loop = conds_.size();
+  while (loop > 0) {
+    const Cond& c = conds_[loop - 1];
+    if (c.frame != frames_.size() - 1 || c.kind == Cond::Kind::macro_call) {
+      loop = 0;
+      break;
+    }
+    if (c.kind == Cond::Kind::switch_ || c.kind == Cond::Kind::while_ || c.kind == Cond::Kind::for_) break;
+    --loop;
+  }
+  if (loop == 0) fail(d.where, "#break outside #switch, #while or #for");
+  while (conds_.size() >= loop) {
+    skip_to({"end"}, d);
+    if (conds_.back().kind == Cond::Kind::for_) for_loops_.pop_back();
+    conds_.pop_back();
   }
 }
 
@@ -428,17 +454,14 @@ void Parser::directive_macro(const Token& d) {
   macro->name = name.text;
   macro->where = name.where;
   if (!raw_next().is_symbol("(")) fail(name.where, "expected '(' after the macro name");
-  if (!raw_peek().is_symbol(")")) {
-    for (;;) {
-      const Token p = raw_next();
-      if (p.kind != Token::Kind::identifier) fail(p.where, "expected a parameter name");
-      macro->parameters.push_back(p.text);
-      const Token sep = raw_next();
-      if (sep.is_symbol(")")) break;
-      if (!sep.is_symbol(",")) fail(sep.where, "expected ',' or ')' in the macro's parameter list");
-    }
-  } else {
-    raw_next();
+  // Commas between parameters are optional and one may end the list, as POV-Ray's Parse_Comma allows
+  // (shapes3.inc has both `Border_Scale_y_ Merge_On,` and `Merge_, )`).
+  for (;;) {
+    const Token p = raw_next();
+    if (p.is_symbol(")")) break;
+    if (p.kind != Token::Kind::identifier) fail(p.where, "expected a parameter name or ')'");
+    macro->parameters.push_back(p.text);
+    if (raw_peek().is_symbol(",")) raw_next();
   }
   macro->tokens = frames_.back().tokens;
   macro->body_start = frames_.back().pos;
@@ -454,9 +477,20 @@ void Parser::invoke_macro(const Token& name, const std::shared_ptr<const Macro>&
                          " (runaway recursion?)");
   expect("(", ("call of macro " + macro->name).c_str());
   std::map<std::string, Value> locals;
+  std::vector<std::pair<std::string, std::string>> by_reference;
   size_t count = 0;
   if (!peek().is_symbol(")")) {
     for (;;) {
+      // POV-Ray passes a lone declared identifier by reference: the macro's #declare of the parameter
+      // changes the caller's identifier.
+      const Token& first = peek();
+      const Frame& top = frames_.back();
+      const bool lone =
+          first.kind == Token::Kind::identifier && !top.injected && lookup(first.text) &&
+          first.text[0] != '[' && top.pos + 1 < top.tokens->size() &&
+          ((*top.tokens)[top.pos + 1].is_symbol(",") || (*top.tokens)[top.pos + 1].is_symbol(")"));
+      if (lone && count < macro->parameters.size())
+        by_reference.emplace_back(macro->parameters[count], first.text);
       Value arg = parse_rvalue();
       if (count < macro->parameters.size()) locals[macro->parameters[count]] = std::move(arg);
       ++count;
@@ -475,6 +509,9 @@ void Parser::invoke_macro(const Token& name, const std::shared_ptr<const Macro>&
   f.pos = macro->body_start;
   f.folder = frames_.back().folder;
   f.call_site = name.where;
+  f.scope = scopes_.size();
+  f.parameters = macro->parameters;
+  f.by_reference = std::move(by_reference);
   frames_.push_back(std::move(f));
   scopes_.push_back(std::move(locals));
   conds_.push_back({Cond::Kind::macro_call, frames_.size() - 1, 0, 0, name.where});
@@ -482,10 +519,15 @@ void Parser::invoke_macro(const Token& name, const std::shared_ptr<const Macro>&
 }
 
 void Parser::end_macro() {
+  std::vector<std::pair<std::string, Value>> results;
+  for (const auto& [parameter, caller] : frames_.back().by_reference)
+    if (const auto found = scopes_.back().find(parameter); found != scopes_.back().end())
+      results.emplace_back(caller, found->second);
   conds_.pop_back();
   frames_.pop_back();
   scopes_.pop_back();
   --macro_depth_;
+  for (auto& [caller, value] : results) assign(caller, std::move(value));
 }
 
 void Parser::directive_include(const Token& d) {
@@ -519,10 +561,22 @@ const Value* Parser::lookup(const std::string& name) const {
 }
 
 void Parser::declare(const std::string& name, Value value, bool local) {
-  if (local)
+  if (local) {
     scopes_.back()[name] = std::move(value);
-  else
-    scopes_.front()[name] = std::move(value);
+    return;
+  }
+  // #declare of a parameter of the running macro sets the parameter (and, through end_macro, the
+  // caller's identifier passed by reference), not a global.
+  for (auto f = frames_.rbegin(); f != frames_.rend(); ++f) {
+    if (f->kind != Frame::Kind::macro) continue;
+    if (std::find(f->parameters.begin(), f->parameters.end(), name) != f->parameters.end() &&
+        f->scope < scopes_.size()) {
+      scopes_[f->scope][name] = std::move(value);
+      return;
+    }
+    break;
+  }
+  scopes_.front()[name] = std::move(value);
 }
 
 std::vector<ChainStep> Parser::chain() const {

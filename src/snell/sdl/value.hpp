@@ -15,6 +15,7 @@
 #include "snell/material/texture.hpp"
 #include "snell/scene/camera.hpp"
 #include "snell/sdl/parsed_object.hpp"
+#include "snell/sdl/spline.hpp"
 #include "snell/sdl/token.hpp"
 #include "snell/texture/color_map.hpp"
 #include "snell/texture/pattern_pigment.hpp"
@@ -45,18 +46,18 @@ struct Macro {
 struct Array;
 
 struct Value {
-  std::variant<Numeric, std::string, math::Transform, std::shared_ptr<const material::Pigment>,
-               std::shared_ptr<const material::Texture>, material::Finish,
-               std::shared_ptr<const material::Interior>, ParsedObject, std::shared_ptr<const Macro>,
-               scene::CameraSpec, std::shared_ptr<const texture::ColorMap>,
-               std::shared_ptr<const texture::PigmentMap>, std::shared_ptr<const function::Function>,
-               std::shared_ptr<const material::Material>, std::shared_ptr<Array>>
+  std::variant<
+      Numeric, std::string, math::Transform, std::shared_ptr<const material::Pigment>,
+      std::shared_ptr<const material::Texture>, material::Finish, std::shared_ptr<const material::Interior>,
+      ParsedObject, std::shared_ptr<const Macro>, scene::CameraSpec, std::shared_ptr<const texture::ColorMap>,
+      std::shared_ptr<const texture::PigmentMap>, std::shared_ptr<const function::Function>,
+      std::shared_ptr<const material::Material>, std::shared_ptr<Array>, std::shared_ptr<const Spline>>
       data;
 
   const char* type_name() const {
-    static const char* names[] = {"number",    "string",      "transform", "pigment", "texture",
-                                  "finish",    "interior",    "object",    "macro",   "camera",
-                                  "color_map", "pigment_map", "function", "material", "array"};
+    static const char* names[] = {"number",   "string",   "transform", "pigment", "texture",   "finish",
+                                  "interior", "object",   "macro",     "camera",  "color_map", "pigment_map",
+                                  "function", "material", "array",     "spline"};
     if (const auto* n = std::get_if<Numeric>(&data))
       return n->color ? "color" : (n->size == 1 ? "float" : "vector");
     return names[data.index()];
