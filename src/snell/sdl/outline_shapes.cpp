@@ -172,7 +172,9 @@ std::shared_ptr<const geometry::Shape> Parser::parse_outline_shape(const Token& 
   raw_next();
   const scene::SourceLocation font_where = peek().where;
   const std::string font = parse_string();
+  accept(",");
   const std::string text = parse_string();
+  accept(",");
   const double thickness = parse_float();
   accept(",");
   const math::Vec3 offset = parse_vector();
