@@ -547,6 +547,8 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
     warn(t.where, w + " is not supported yet; ignored");
     skip_block(w);
   } else if (w == "no_radiosity") {
+  } else if (w == "sturm") {
+    parse_bool_optional(true);  // `object { Quartic sturm }`: roots always come from the Sturm solver
   } else {
     fail(t.where, "unexpected '" + w + "' in object");
   }

@@ -178,8 +178,12 @@ std::shared_ptr<const geometry::Shape> Parser::parse_outline_shape(const Token& 
   const double thickness = parse_float();
   accept(",");
   const math::Vec3 offset = parse_vector();
-  std::vector<std::filesystem::path> candidates{frames_.back().folder / font};
-  for (const auto& dir : options_.library_paths) candidates.push_back(dir / font);
+  // POV-Ray adds ".ttf" to a name without it.
+  std::vector<std::filesystem::path> candidates;
+  for (const std::string& name : {font, font + ".ttf"}) {
+    candidates.push_back(frames_.back().folder / name);
+    for (const auto& dir : options_.library_paths) candidates.push_back(dir / name);
+  }
   for (const auto& c : candidates) {
     std::error_code ec;
     if (std::filesystem::is_regular_file(c, ec)) return shapes::text(c, text, thickness, offset);
