@@ -14,7 +14,7 @@ bool is_shape_keyword(const std::string& w) {
   static const char* const shapes[] = {
       "sphere", "plane", "box", "cylinder", "cone", "disc", "torus", "triangle", "smooth_triangle", "quadric",
       // outline_shapes.cpp
-      "poly", "cubic", "quartic", "polygon", "prism", "lathe", "sor", "text"};
+      "poly", "cubic", "quartic", "polygon", "prism", "lathe", "sor", "text", "sphere_sweep"};
   for (const char* s : shapes)
     if (w == s) return true;
   return false;
@@ -41,8 +41,7 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
     }
   }
   if (w == "mesh2" || w == "superellipsoid" || w == "height_field" || w == "isosurface" ||
-      w == "julia_fractal" || w == "parametric" || w == "sphere_sweep" || w == "bicubic_patch" ||
-      w == "lemon" || w == "ovus")
+      w == "julia_fractal" || w == "parametric" || w == "bicubic_patch" || w == "lemon" || w == "ovus")
     fail(t.where, "the object '" + w + "' is not supported yet");
   return std::nullopt;
 }

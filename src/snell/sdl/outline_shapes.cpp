@@ -166,6 +166,34 @@ std::shared_ptr<const geometry::Shape> Parser::parse_outline_shape(const Token& 
     }
     return shapes::sor(points, open);
   }
+  if (w == "sphere_sweep") {
+    // sphere_sweep { spline N, <centre>, radius ... [tolerance t] }
+    const Token spline_word = peek();
+    geometry::SweepSpline spline = geometry::SweepSpline::linear;
+    if (spline_word.is_word("b_spline")) {
+      spline = geometry::SweepSpline::b_spline;
+    } else if (spline_word.is_word("cubic_spline")) {
+      spline = geometry::SweepSpline::cubic;
+    } else if (!spline_word.is_word("linear_spline")) {
+      fail(spline_word.where, "expected linear_spline, b_spline or cubic_spline in sphere_sweep");
+    }
+    raw_next();
+    const int n = parse_point_count("sphere_sweep", spline == geometry::SweepSpline::linear ? 2 : 4);
+    std::vector<geometry::SweepSphere> spheres;
+    for (int i = 0; i < n; ++i) {
+      geometry::SweepSphere s;
+      s.center = parse_vector();
+      accept(",");
+      s.radius = parse_float();
+      accept(",");
+      spheres.push_back(s);
+    }
+    if (peek().is_word("tolerance")) {
+      raw_next();
+      parse_float();  // the curved envelope is approximated by fixed steps instead
+    }
+    return shapes::sphere_sweep(spline, spheres);
+  }
   // text { ttf "font.ttf" "string" thickness, offset }
   const Token font_kind = peek();
   if (!font_kind.is_word("ttf")) fail(font_kind.where, "expected 'ttf' in text");

@@ -66,6 +66,10 @@ ShapePtr sor(const std::vector<math::Vec2>& points, bool open) {
   return std::make_shared<geometry::Sor>(points, open);
 }
 
+ShapePtr sphere_sweep(geometry::SweepSpline spline, const std::vector<geometry::SweepSphere>& points) {
+  return std::make_shared<geometry::SphereSweep>(geometry::sweep_path(spline, points));
+}
+
 ShapePtr text(const std::filesystem::path& font, const std::string& string, double thickness,
               const Vec3& offset) {
   return std::make_shared<geometry::Prism>(geometry::text_outline(font, string, {offset.x, offset.y}), 0,

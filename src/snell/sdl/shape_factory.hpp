@@ -10,6 +10,7 @@
 #include "snell/geometry/mesh.hpp"
 #include "snell/geometry/prism.hpp"
 #include "snell/geometry/shape.hpp"
+#include "snell/geometry/sphere_sweep.hpp"
 
 namespace snell::sdl::shapes {
 
@@ -31,6 +32,7 @@ ShapePtr prism(geometry::SplineKind kind, const std::vector<math::Vec2>& points,
                double height2, geometry::Sweep sweep, bool open);
 ShapePtr lathe(geometry::SplineKind kind, const std::vector<math::Vec2>& points);
 ShapePtr sor(const std::vector<math::Vec2>& points, bool open);
+ShapePtr sphere_sweep(geometry::SweepSpline spline, const std::vector<geometry::SweepSphere>& points);
 /// `text { ttf font string thickness, offset }`: the string's outline swept along z from 0 to thickness.
 ShapePtr text(const std::filesystem::path& font, const std::string& string, double thickness,
               const Vec3& offset);
