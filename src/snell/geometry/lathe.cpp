@@ -22,22 +22,6 @@ Sextic product(const Cubic& p, const Cubic& q) {
   return r;
 }
 
-// Whether a (non-horizontal) ray stays out of the ring a piece can occupy while it crosses the piece's
-// height band: its squared distance from the axis, a convex quadratic in u, is then above the piece's
-// largest radius or below its smallest one. Saves the sextic for most pieces (as POV-Ray's per-segment
-// bounding cylinders do).
-bool misses_band(const AxialRay& ray, const CurveSegment& piece) {
-  const double slack = 1e-9 * (1 + std::fabs(piece.lo.v) + std::fabs(piece.hi.v));
-  double u0 = (piece.lo.v - slack - ray.o.y) / ray.dn.y, u1 = (piece.hi.v + slack - ray.o.y) / ray.dn.y;
-  if (u0 > u1) std::swap(u0, u1);
-  const auto rho2 = [&](double u) { return (ray.a * u + ray.b) * u + ray.c; };
-  const double vertex = ray.a > 0 ? std::clamp(-ray.b / (2 * ray.a), u0, u1) : u0;
-  const double lowest = std::min({rho2(vertex), rho2(u0), rho2(u1)}), highest = std::max(rho2(u0), rho2(u1));
-  const double r_max = std::max(std::fabs(piece.lo.u), std::fabs(piece.hi.u));
-  const double r_min = piece.lo.u > 0 ? piece.lo.u : piece.hi.u < 0 ? -piece.hi.u : 0;
-  return lowest > r_max * r_max * (1 + 1e-9) + slack || highest < r_min * r_min * (1 - 1e-9) - slack;
-}
-
 }  // namespace
 
 Lathe::Lathe(Outline profile) : profile_(std::move(profile)) {
@@ -85,7 +69,9 @@ void Lathe::crossings(const Ray& ray, double t_min, double t_max, F&& emit) cons
       for (int k = 0; k < n; ++k) radial_solutions(evaluate_polynomial(r, roots[k]), 0, true, i, roots[k]);
       continue;
     }
-    if (misses_band(axial, piece)) continue;
+    const double r_max = std::max(std::fabs(piece.lo.u), std::fabs(piece.hi.u));
+    const double r_min = piece.lo.u > 0 ? piece.lo.u : piece.hi.u < 0 ? -piece.hi.u : 0;
+    if (axial.misses_band(piece.lo.v, piece.hi.v, r_min, r_max)) continue;
     // dn.y^2 r(s)^2 = a Y(s)^2 + b dn.y Y(s) + c dn.y^2, with Y(s) = y(s) - o.y = u dn.y.
     const Sextic r2 = product(r, r), y2 = product(y, y);
     Sextic eq{};

@@ -27,15 +27,21 @@ Sor::Sor(std::span<const Vec2> p, bool open) : open_(open) {
          p[i + 2].v,
          {k0, h * m0, -3 * k0 - 2 * h * m0 + 3 * k1 - h * m1, 2 * k0 + h * m0 - 2 * k1 + h * m1}});
   }
-  for (const Piece& piece : pieces_) {
-    // The largest r^2 over the piece: at its ends or where the derivative vanishes.
+  for (Piece& piece : pieces_) {
+    // The range of r^2 over the piece: at its ends or where the derivative vanishes.
     double w0 = 0, w1 = 0;
     double top = std::max(piece.c[0], evaluate_polynomial(piece.c, 1));
+    double bottom = std::min(piece.c[0], evaluate_polynomial(piece.c, 1));
     if (solve_quadratic(3 * piece.c[3], 2 * piece.c[2], piece.c[1], w0, w1)) {
       for (const double w : {w0, w1})
-        if (w > 0 && w < 1) top = std::max(top, evaluate_polynomial(piece.c, w));
+        if (w > 0 && w < 1) {
+          top = std::max(top, evaluate_polynomial(piece.c, w));
+          bottom = std::min(bottom, evaluate_polynomial(piece.c, w));
+        }
     }
     radius_ = std::max(radius_, std::sqrt(std::max(0.0, top)));
+    piece.r_min = std::sqrt(std::max(0.0, bottom));
+    piece.r_max = std::sqrt(std::max(0.0, top));
   }
 }
 
@@ -89,6 +95,7 @@ void Sor::crossings(const Ray& ray, double t_min, double t_max, F&& emit) const 
     return;
   }
   for (const Piece& piece : pieces_) {
+    if (axial.misses_band(piece.y0, piece.y1, piece.r_min, piece.r_max)) continue;
     // u = (y - o.y) / dn.y = alpha + beta w along the piece.
     const double h = piece.y1 - piece.y0;
     const double alpha = (piece.y0 - o.y) / dn.y, beta = h / dn.y;

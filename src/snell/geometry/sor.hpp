@@ -29,6 +29,8 @@ class Sor final : public Shape {
   struct Piece {
     double y0, y1;
     std::array<double, 4> c;
+    /// Radius range over the piece, for skipping it.
+    double r_min = 0, r_max = 0;
   };
   const Piece& piece_at(double y) const;
   template <typename F>
