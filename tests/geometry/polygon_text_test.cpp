@@ -39,6 +39,14 @@ TEST(PolygonTest, TiltedTriangle) {
               1e-12);
 }
 
+TEST(PolygonTest, UnclosedPolygonIsClosed) {
+  const std::vector<Vec3> p{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+  LocalHit hit;
+  EXPECT_TRUE(Polygon(p).intersect({{1, 1.9, -1}, {0, 0, 1}, 0}, 0, kInfinity, hit));
+  // Left of the missing closing edge: without it the even-odd count would call this point inside.
+  EXPECT_FALSE(Polygon(p).intersect({{-1, 1, -1}, {0, 0, 1}, 0}, 0, kInfinity, hit));
+}
+
 TEST(PolygonTest, CollinearPointsAreRejected) {
   const std::vector<Vec3> p{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
   EXPECT_THROW(Polygon{p}, std::invalid_argument);

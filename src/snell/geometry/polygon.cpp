@@ -23,6 +23,9 @@ std::vector<CurveSegment> planar_pieces(std::span<const Vec3> points, const Vec3
                                         const Vec3& v) {
   std::vector<Vec2> flat;
   for (const Vec3& p : points) flat.push_back({dot(p - origin, u), dot(p - origin, v)});
+  // As POV-Ray does, an unclosed last sub-polygon is closed by its first point.
+  Vec2 first_of_last;
+  if (!outline_closed(SplineKind::linear, flat, first_of_last)) flat.push_back(first_of_last);
   return prism_pieces(SplineKind::linear, flat);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // POV-Ray `polygon`: flat sub-polygons in one plane, filled by the even-odd rule (a sub-polygon ends
-// where a point repeats its first point, so holes are sub-polygons inside others). Flat: never inside.
+// where a point repeats its first point, so holes are sub-polygons inside others; an unclosed last one
+// is closed). Flat: never inside.
 #include <span>
 
 #include "snell/geometry/outline.hpp"
