@@ -40,11 +40,12 @@ TEST(PolygonTest, TiltedTriangle) {
 }
 
 TEST(PolygonTest, UnclosedPolygonIsClosed) {
-  const std::vector<Vec3> p{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+  // A square with a notch: the missing closing edge (1,1)-(0,0) bounds the notch's lower side.
+  const std::vector<Vec3> p{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {1, 1, 0}};
   LocalHit hit;
-  EXPECT_TRUE(Polygon(p).intersect({{1, 1.9, -1}, {0, 0, 1}, 0}, 0, kInfinity, hit));
-  // Left of the missing closing edge: without it the even-odd count would call this point inside.
-  EXPECT_FALSE(Polygon(p).intersect({{-1, 1, -1}, {0, 0, 1}, 0}, 0, kInfinity, hit));
+  EXPECT_TRUE(Polygon(p).intersect({{1.5, 1, -1}, {0, 0, 1}, 0}, 0, kInfinity, hit));
+  // In the notch: without the closing edge the even-odd count would call this point inside.
+  EXPECT_FALSE(Polygon(p).intersect({{0.3, 0.6, -1}, {0, 0, 1}, 0}, 0, kInfinity, hit));
 }
 
 TEST(PolygonTest, CollinearPointsAreRejected) {
