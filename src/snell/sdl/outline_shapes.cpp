@@ -2,6 +2,7 @@
 // and text (POV-Ray 3.7 reference, "Finite Solid Primitives", "Finite Patch Primitives", "Poly, Cubic
 // and Quartic"). Called from parse_shape, which parses the opening brace before and the modifiers after.
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,13 @@ int fewest_points(geometry::SplineKind kind, bool prism) {
   return 0;
 }
 
+// A count as written ("12", "1e+09"), not std::to_string's six decimals.
+std::string shortest(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
 constexpr int kMostPoints = 1 << 20;  // bounds memory for a hostile point count
 
 }  // namespace
@@ -46,7 +54,7 @@ int Parser::parse_point_count(const char* what, int fewest) {
   const double n = parse_float();
   if (!(n >= fewest) || n > kMostPoints)
     fail(where, std::string(what) + " needs between " + std::to_string(fewest) + " and " +
-                    std::to_string(kMostPoints) + " points, not " + std::to_string(n));
+                    std::to_string(kMostPoints) + " points, not " + shortest(n));
   accept(",");
   return static_cast<int>(n);
 }
