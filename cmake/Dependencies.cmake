@@ -6,6 +6,7 @@ find_package(OpenImageIO REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(Threads REQUIRED)
 find_package(PNG REQUIRED)        # PNG output without loading OpenImageIO (src/snell/io/png_writer.hpp)
+find_package(Freetype REQUIRED)  # text { ttf ... } glyph outlines
 
 # Debian's OpenImageIO target names /usr/include/opencv4, which does not exist without OpenCV's headers;
 # wrap it in a target of our own with the missing folder filtered out.

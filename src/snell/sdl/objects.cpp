@@ -11,8 +11,10 @@ namespace snell::sdl {
 namespace {
 
 bool is_shape_keyword(const std::string& w) {
-  static const char* const shapes[] = {"sphere", "plane", "box",      "cylinder",        "cone",
-                                       "disc",   "torus", "triangle", "smooth_triangle", "quadric"};
+  static const char* const shapes[] = {
+      "sphere", "plane", "box", "cylinder", "cone", "disc", "torus", "triangle", "smooth_triangle", "quadric",
+      // outline_shapes.cpp
+      "poly", "cubic", "quartic", "polygon", "prism", "lathe", "sor", "text", "sphere_sweep"};
   for (const char* s : shapes)
     if (w == s) return true;
   return false;
@@ -38,10 +40,8 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
       return o;
     }
   }
-  if (w == "mesh2" || w == "lathe" || w == "sor" || w == "prism" || w == "superellipsoid" ||
-      w == "height_field" || w == "isosurface" || w == "text" || w == "polygon" || w == "julia_fractal" ||
-      w == "parametric" || w == "sphere_sweep" || w == "poly" || w == "cubic" || w == "quartic" ||
-      w == "bicubic_patch" || w == "lemon" || w == "ovus")
+  if (w == "mesh2" || w == "superellipsoid" || w == "height_field" || w == "isosurface" ||
+      w == "julia_fractal" || w == "parametric" || w == "bicubic_patch" || w == "lemon" || w == "ovus")
     fail(t.where, "the object '" + w + "' is not supported yet");
   return std::nullopt;
 }
@@ -176,6 +176,8 @@ ParsedObject Parser::parse_shape(const Token& keyword) {
       const math::Vec3 linear = parse_vector();
       comma();
       o.shape = shapes::quadric(squares, mixed, linear, parse_float());
+    } else {
+      o.shape = parse_outline_shape(keyword);
     }
   } catch (const ParseError&) {
     throw;
@@ -551,6 +553,8 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
     warn(t.where, w + " is not supported yet; ignored");
     skip_block(w);
   } else if (w == "no_radiosity") {
+  } else if (w == "sturm") {
+    parse_bool_optional(true);  // `object { Quartic sturm }`: roots always come from the Sturm solver
   } else {
     fail(t.where, "unexpected '" + w + "' in object");
   }

@@ -249,6 +249,12 @@ class Parser {
   ParsedObject parse_union(const Token& keyword);
   ParsedObject parse_blob(const Token& keyword);
   ParsedObject parse_mesh(const Token& keyword);
+  // ---- poly, polygon, prism, lathe, sor, text (outline_shapes.cpp) ----
+  /// The shape's parameters after `keyword {`, up to its modifiers.
+  std::shared_ptr<const geometry::Shape> parse_outline_shape(const Token& keyword);
+  int parse_point_count(const char* what, int fewest);
+  std::vector<math::Vec2> parse_points_2d(int count);
+  void skip_sturm();
   ParsedObject parse_light(const Token& keyword);
   void parse_object_modifiers(ParsedObject& object);
   bool parse_object_modifier(ParsedObject& object);

@@ -4,9 +4,14 @@
 #include "snell/geometry/cone.hpp"
 #include "snell/geometry/cylinder.hpp"
 #include "snell/geometry/disc.hpp"
+#include "snell/geometry/lathe.hpp"
 #include "snell/geometry/plane.hpp"
+#include "snell/geometry/poly.hpp"
+#include "snell/geometry/polygon.hpp"
 #include "snell/geometry/quadric.hpp"
+#include "snell/geometry/sor.hpp"
 #include "snell/geometry/sphere.hpp"
+#include "snell/geometry/text_outline.hpp"
 #include "snell/geometry/torus.hpp"
 #include "snell/geometry/triangle.hpp"
 
@@ -37,6 +42,38 @@ ShapePtr disc(const Vec3& center, const Vec3& normal, double radius, double hole
 
 ShapePtr torus(double major, double minor) {
   return std::make_shared<geometry::Torus>(major, minor);
+}
+
+ShapePtr poly(int order, const std::vector<double>& coefficients) {
+  return std::make_shared<geometry::Poly>(order, coefficients);
+}
+
+ShapePtr polygon(const std::vector<Vec3>& points) {
+  return std::make_shared<geometry::Polygon>(points);
+}
+
+ShapePtr prism(geometry::SplineKind kind, const std::vector<math::Vec2>& points, double height1,
+               double height2, geometry::Sweep sweep, bool open) {
+  return std::make_shared<geometry::Prism>(geometry::Outline(geometry::prism_pieces(kind, points)), height1,
+                                           height2, sweep, open);
+}
+
+ShapePtr lathe(geometry::SplineKind kind, const std::vector<math::Vec2>& points) {
+  return std::make_shared<geometry::Lathe>(geometry::Outline(geometry::lathe_pieces(kind, points)));
+}
+
+ShapePtr sor(const std::vector<math::Vec2>& points, bool open) {
+  return std::make_shared<geometry::Sor>(points, open);
+}
+
+ShapePtr sphere_sweep(geometry::SweepSpline spline, const std::vector<geometry::SweepSphere>& points) {
+  return std::make_shared<geometry::SphereSweep>(geometry::sweep_path(spline, points));
+}
+
+ShapePtr text(const std::filesystem::path& font, const std::string& string, double thickness,
+              const Vec3& offset) {
+  return std::make_shared<geometry::Prism>(geometry::text_outline(font, string, {offset.x, offset.y}), 0,
+                                           thickness, geometry::Sweep::linear, false, true);
 }
 
 ShapePtr triangle(const Vec3& a, const Vec3& b, const Vec3& c) {

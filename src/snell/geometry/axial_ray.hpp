@@ -1,0 +1,52 @@
+#pragma once
+// A ray prepared for shapes of revolution around the y axis (lathe, sor): unit direction and origin moved
+// to the ray's closest approach to the shape's origin, so that polynomial coefficients stay of the shape's
+// size however far the ray starts. A point of the ray is o + u dn with u = f + t |d|; its squared distance
+// from the axis is a u^2 + b u + c.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "snell/math/ray.hpp"
+
+namespace snell::geometry {
+
+struct AxialRay {
+  math::Vec3 o, dn;
+  double f = 0, length = 0;
+  double a = 0, b = 0, c = 0;
+
+  /// False for a degenerate (zero or non-finite) direction.
+  bool prepare(const math::Ray& ray) {
+    length = math::length(ray.direction);
+    if (!(length > 0) || !std::isfinite(length)) return false;
+    dn = ray.direction / length;
+    f = dot(ray.origin, dn);
+    o = ray.origin - f * dn;
+    a = dn.x * dn.x + dn.z * dn.z;
+    b = 2 * (o.x * dn.x + o.z * dn.z);
+    c = o.x * o.x + o.z * o.z;
+    return true;
+  }
+  /// Whether the ray never comes within `radius` of the axis.
+  bool misses_cylinder(double radius) const {
+    return a > 0 && c - b * b / (4 * a) > radius * radius * (1 + 1e-9);
+  }
+  double t_of(double u) const { return (u - f) / length; }
+
+  /// Whether a non-horizontal ray stays out of the ring r_min <= r <= r_max while it crosses the height
+  /// band [y_lo, y_hi]: its squared distance from the axis, convex in u, is then above r_max^2 or below
+  /// r_min^2 there. Lets shapes skip a piece's polynomial (as POV-Ray's per-segment bounding cylinders).
+  bool misses_band(double y_lo, double y_hi, double r_min, double r_max) const {
+    const double slack = 1e-9 * (1 + std::fabs(y_lo) + std::fabs(y_hi));
+    double u0 = (y_lo - slack - o.y) / dn.y, u1 = (y_hi + slack - o.y) / dn.y;
+    if (u0 > u1) std::swap(u0, u1);
+    const auto rho2 = [&](double u) { return (a * u + b) * u + c; };
+    const double vertex = a > 0 ? std::clamp(-b / (2 * a), u0, u1) : u0;
+    const double lowest = std::min({rho2(vertex), rho2(u0), rho2(u1)}),
+                 highest = std::max(rho2(u0), rho2(u1));
+    return lowest > r_max * r_max * (1 + 1e-9) + slack || highest < r_min * r_min * (1 - 1e-9) - slack;
+  }
+};
+
+}  // namespace snell::geometry

@@ -1,0 +1,43 @@
+#pragma once
+// POV-Ray `poly`, `cubic` and `quartic`: the solid where a polynomial in x, y, z is negative. Along a ray
+// the polynomial becomes one in t, whose roots the Sturm solver finds (so `sturm` is always on).
+#include <vector>
+
+#include "snell/geometry/shape.hpp"
+
+namespace snell::geometry {
+
+/// Highest order `Poly` accepts: the root solver's degree limit.
+int max_poly_order();
+
+/// Number of coefficients of a poly of this order: (n+1)(n+2)(n+3)/6.
+int poly_coefficient_count(int order);
+
+class Poly final : public Shape {
+ public:
+  /// `coefficients` in POV-Ray's order: terms x^i y^j z^k by falling i, then falling j, then falling k,
+  /// with i + j + k <= order (reference, "Poly, Cubic and Quartic").
+  Poly(int order, const std::vector<double>& coefficients);
+
+  Bounds3 bounds() const override { return Bounds3::infinite(); }
+  bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
+  bool inside(const Vec3& p) const override;
+  std::string_view kind() const override { return "poly"; }
+
+  double value(const Vec3& p) const;
+  Vec3 gradient(const Vec3& p) const;
+
+ private:
+  struct Term {
+    int i, j, k;
+    double c;
+  };
+  /// Roots along the ray in increasing t; returns their number.
+  int roots_along(const Ray& ray, double t_min, double t_max, double* ts) const;
+
+  int order_;
+  std::vector<Term> terms_;
+};
+
+}  // namespace snell::geometry
