@@ -5,6 +5,7 @@ find_package(embree 3 REQUIRED)   # target: embree (no namespace)
 find_package(OpenImageIO REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(Threads REQUIRED)
+find_package(ZLIB REQUIRED)        # palette PNG indices for height_field (io/png_indices.cpp)
 
 # Debian's OpenImageIO target names /usr/include/opencv4, which does not exist without OpenCV's headers;
 # wrap it in a target of our own with the missing folder filtered out.

@@ -6,6 +6,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev libassimp-dev
   libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev libopenmpi-dev openmpi-bin
+  zlib1g-dev
   povray povray-includes povray-examples python3 python3-numpy python3-pil
 )
 missing=()

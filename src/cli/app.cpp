@@ -129,6 +129,9 @@ int render(CliOptions& o) {
   io::write_image(o.output, result.image, wo);
   const double write_s = seconds_since(t_write);
 
+  if (!o.quiet)
+    for (const auto& note : scene.render_notes)
+      if (const std::string text = note(); !text.empty()) fmt::print(stderr, "{}\n", text);
   if (!o.quiet || o.stats) {
     const render::RayCounters& r = result.rays;
     fmt::print(stderr,

@@ -26,7 +26,8 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   if (t.kind != Token::Kind::identifier) return std::nullopt;
   const std::string& w = t.text;
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
-      w == "blob" || w == "mesh" || w == "light_source" || w == "object") {
+      w == "blob" || w == "mesh" || w == "light_source" || w == "object" || w == "isosurface" ||
+      w == "superellipsoid" || w == "height_field") {
     raw_next();
     return parse_object(t);
   }
@@ -38,10 +39,9 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
       return o;
     }
   }
-  if (w == "mesh2" || w == "lathe" || w == "sor" || w == "prism" || w == "superellipsoid" ||
-      w == "height_field" || w == "isosurface" || w == "text" || w == "polygon" || w == "julia_fractal" ||
-      w == "parametric" || w == "sphere_sweep" || w == "poly" || w == "cubic" || w == "quartic" ||
-      w == "bicubic_patch" || w == "lemon" || w == "ovus")
+  if (w == "mesh2" || w == "lathe" || w == "sor" || w == "prism" || w == "text" || w == "polygon" ||
+      w == "julia_fractal" || w == "parametric" || w == "sphere_sweep" || w == "poly" || w == "cubic" ||
+      w == "quartic" || w == "bicubic_patch" || w == "lemon" || w == "ovus")
     fail(t.where, "the object '" + w + "' is not supported yet");
   return std::nullopt;
 }
@@ -60,6 +60,12 @@ ParsedObject Parser::parse_object(const Token& keyword) {
     o = parse_mesh(keyword);
   } else if (w == "light_source") {
     o = parse_light(keyword);
+  } else if (w == "isosurface") {
+    o = parse_isosurface(keyword);
+  } else if (w == "superellipsoid") {
+    o = parse_superellipsoid(keyword);
+  } else if (w == "height_field") {
+    o = parse_height_field(keyword);
   } else if (w == "object") {
     expect("{", "object");
     const Token& inner = peek();

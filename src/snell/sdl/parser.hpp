@@ -201,6 +201,10 @@ class Parser {
   ParsedObject parse_blob(const Token& keyword);
   ParsedObject parse_mesh(const Token& keyword);
   ParsedObject parse_light(const Token& keyword);
+  // procedural_objects.cpp, height_field.cpp
+  ParsedObject parse_isosurface(const Token& keyword);
+  ParsedObject parse_superellipsoid(const Token& keyword);
+  ParsedObject parse_height_field(const Token& keyword);
   void parse_object_modifiers(ParsedObject& object);
   bool parse_object_modifier(ParsedObject& object);
   /// clipped_by { ... } / bounded_by { ... } after its keyword.
