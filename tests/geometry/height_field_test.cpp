@@ -25,8 +25,8 @@ TEST(HeightFieldTest, FlatGridIsAPlane) {
   ASSERT_TRUE(hf.intersect({{0.3, 5, 0.7}, {0, -1, 0}, 0}, 1e-9, math::kInfinity, hit));
   EXPECT_NEAR(hit.t, 4.5, 1e-6);
   shape_checks::expect_near(normalize(hit.normal), {0, 1, 0}, 1e-12);
-  EXPECT_NEAR(hit.uv.x, 0.3, 1e-9);
-  EXPECT_NEAR(hit.uv.y, 0.7, 1e-9);
+  EXPECT_NEAR(hit.uv.u, 0.3, 1e-9);
+  EXPECT_NEAR(hit.uv.v, 0.7, 1e-9);
 }
 
 TEST(HeightFieldTest, RampHasTheRampsSlope) {
