@@ -121,13 +121,8 @@ ParsedObject Parser::parse_height_field(const Token& keyword) {
       break;
     }
   }
-  try {
-    o.shape = shapes::height_field(std::move(grid), smooth, water);
-  } catch (const std::exception& e) {
-    fail(keyword.where, e.what());
-  }
-  parse_object_modifiers(o);
-  return o;
+  return finish_shape(std::move(o), keyword,
+                      [&] { return shapes::height_field(std::move(grid), smooth, water); });
 }
 
 }  // namespace snell::sdl

@@ -27,7 +27,7 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   const std::string& w = t.text;
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
       w == "blob" || w == "mesh" || w == "light_source" || w == "object" || w == "isosurface" ||
-      w == "superellipsoid" || w == "height_field") {
+      w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" || w == "julia_fractal") {
     raw_next();
     return parse_object(t);
   }
@@ -40,8 +40,8 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
     }
   }
   if (w == "mesh2" || w == "lathe" || w == "sor" || w == "prism" || w == "text" || w == "polygon" ||
-      w == "julia_fractal" || w == "parametric" || w == "sphere_sweep" || w == "poly" || w == "cubic" ||
-      w == "quartic" || w == "bicubic_patch" || w == "lemon" || w == "ovus")
+      w == "parametric" || w == "sphere_sweep" || w == "poly" || w == "cubic" || w == "quartic" ||
+      w == "lemon" || w == "ovus")
     fail(t.where, "the object '" + w + "' is not supported yet");
   return std::nullopt;
 }
@@ -66,6 +66,10 @@ ParsedObject Parser::parse_object(const Token& keyword) {
     o = parse_superellipsoid(keyword);
   } else if (w == "height_field") {
     o = parse_height_field(keyword);
+  } else if (w == "bicubic_patch") {
+    o = parse_bicubic_patch(keyword);
+  } else if (w == "julia_fractal") {
+    o = parse_julia_fractal(keyword);
   } else if (w == "object") {
     expect("{", "object");
     const Token& inner = peek();

@@ -4,6 +4,7 @@
 // The member functions are spread over files by concern: token_source.cpp (token stack, directives),
 // expressions.cpp (floats, vectors, colours, strings), materials.cpp, objects.cpp, scene_items.cpp.
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -205,6 +206,11 @@ class Parser {
   ParsedObject parse_isosurface(const Token& keyword);
   ParsedObject parse_superellipsoid(const Token& keyword);
   ParsedObject parse_height_field(const Token& keyword);
+  ParsedObject parse_bicubic_patch(const Token& keyword);
+  ParsedObject parse_julia_fractal(const Token& keyword);
+  /// Sets o.shape from `make` (whose exceptions become errors at `keyword`), then reads the modifiers.
+  ParsedObject finish_shape(ParsedObject o, const Token& keyword,
+                            const std::function<std::shared_ptr<const geometry::Shape>()>& make);
   void parse_object_modifiers(ParsedObject& object);
   bool parse_object_modifier(ParsedObject& object);
   /// clipped_by { ... } / bounded_by { ... } after its keyword.

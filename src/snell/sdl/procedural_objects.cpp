@@ -1,11 +1,12 @@
-// Procedural surfaces: isosurface and superellipsoid (POV-Ray 3.7 reference, "Isosurface Object",
-// "Superquadric Ellipsoid").
+// Procedural surfaces: isosurface, superellipsoid and bicubic_patch (POV-Ray 3.7 reference, "Isosurface
+// Object", "Superquadric Ellipsoid", "Bicubic Patch").
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <optional>
 
+#include "snell/geometry/bicubic_patch.hpp"
 #include "snell/geometry/box.hpp"
 #include "snell/geometry/isosurface.hpp"
 #include "snell/geometry/sphere.hpp"
@@ -30,6 +31,19 @@ std::string gradient_warning(const std::string& where, const geometry::Isosurfac
 }
 
 }  // namespace
+
+ParsedObject Parser::finish_shape(ParsedObject o, const Token& keyword,
+                                  const std::function<std::shared_ptr<const geometry::Shape>()>& make) {
+  try {
+    o.shape = make();
+  } catch (const ParseError&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(keyword.where, e.what());
+  }
+  parse_object_modifiers(o);
+  return o;
+}
 
 ParsedObject Parser::parse_isosurface(const Token& keyword) {
   ParsedObject o;
@@ -109,16 +123,12 @@ ParsedObject Parser::parse_isosurface(const Token& keyword) {
     s.max_gradient = geometry::estimate_max_gradient(*s.function, s.container->bounds(), (*evaluate)[0],
                                                      std::max(1.0, (*evaluate)[1]));
   }
-  try {
+  return finish_shape(std::move(o), keyword, [&] {
     auto iso = shapes::isosurface(std::move(s));
     const std::string where = keyword.where.to_string();
     scene_.render_notes.push_back([where, iso] { return gradient_warning(where, *iso); });
-    o.shape = std::move(iso);
-  } catch (const std::exception& e) {
-    fail(keyword.where, e.what());
-  }
-  parse_object_modifiers(o);
-  return o;
+    return iso;
+  });
 }
 
 ParsedObject Parser::parse_superellipsoid(const Token& keyword) {
@@ -126,13 +136,90 @@ ParsedObject Parser::parse_superellipsoid(const Token& keyword) {
   o.where = keyword.where;
   expect("{", "superellipsoid");
   const math::Vec3 en = parse_vector();
-  try {
-    o.shape = shapes::superellipsoid(en.x, en.y);
-  } catch (const std::exception& e) {
-    fail(keyword.where, e.what());
+  return finish_shape(std::move(o), keyword, [&] { return shapes::superellipsoid(en.x, en.y); });
+}
+
+ParsedObject Parser::parse_bicubic_patch(const Token& keyword) {
+  ParsedObject o;
+  o.where = keyword.where;
+  expect("{", "bicubic_patch");
+  // POV-Ray's defaults when u_steps / v_steps are not given (parser, Parse_Bicubic_Patch).
+  int u_steps = 3, v_steps = 3;
+  for (;;) {
+    const Token t = peek();
+    if (t.is_word("type") || t.is_word("flatness")) {
+      raw_next();
+      parse_float();  // snell always tessellates uniformly, as type 1 does
+    } else if (t.is_word("u_steps") || t.is_word("v_steps")) {
+      raw_next();
+      const double steps = parse_float();
+      if (!(steps >= 0 && steps <= 8)) fail(t.where, t.text + " must be between 0 and 8");
+      (t.text == "u_steps" ? u_steps : v_steps) = static_cast<int>(steps);
+    } else if (t.is_word("accuracy")) {
+      raw_next();
+      parse_float();
+    } else {
+      break;
+    }
   }
-  parse_object_modifiers(o);
-  return o;
+  accept(",");
+  geometry::BezierPoints points;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i > 0) accept(",");
+    points[i] = parse_vector();
+  }
+  if (peek().is_word("uv_vectors")) {
+    raw_next();
+    for (int i = 0; i < 4; ++i) parse_vector();  // corner uv; the unit square is assumed
+  }
+  return finish_shape(std::move(o), keyword, [&] {
+    return shapes::mesh(geometry::tessellate_bicubic_patch(points, u_steps, v_steps));
+  });
+}
+
+ParsedObject Parser::parse_julia_fractal(const Token& keyword) {
+  ParsedObject o;
+  o.where = keyword.where;
+  expect("{", "julia_fractal");
+  const auto vector4 = [&] {
+    const Numeric n = parse_numeric();
+    return geometry::Vec4{n.v[0], n.v[1], n.v[2], n.v[3]};
+  };
+  geometry::JuliaFractal::Settings s;
+  s.c = vector4();
+  for (;;) {
+    const Token t = peek();
+    if (t.is_word("quaternion") || t.is_word("hypercomplex")) {
+      raw_next();
+      s.algebra = t.text == "quaternion" ? geometry::JuliaFractal::Algebra::quaternion
+                                         : geometry::JuliaFractal::Algebra::hypercomplex;
+    } else if (t.is_word("sqr") || t.is_word("cube")) {
+      raw_next();
+      s.power = t.text == "sqr" ? 2 : 3;
+    } else if (t.is_word("exp") || t.is_word("reciprocal") || t.is_word("sin") || t.is_word("asin") ||
+               t.is_word("sinh") || t.is_word("asinh") || t.is_word("cos") || t.is_word("acos") ||
+               t.is_word("cosh") || t.is_word("acosh") || t.is_word("tan") || t.is_word("atan") ||
+               t.is_word("tanh") || t.is_word("atanh") || t.is_word("ln") || t.is_word("pwr")) {
+      fail(t.where, "julia_fractal function '" + t.text + "' is not supported (sqr and cube are)");
+    } else if (t.is_word("max_iteration")) {
+      raw_next();
+      const double n = parse_float();
+      if (!(n >= 1 && n <= 10000)) fail(t.where, "max_iteration must be between 1 and 10000");
+      s.max_iteration = static_cast<int>(n);
+    } else if (t.is_word("precision")) {
+      raw_next();
+      s.precision = parse_float();
+      if (!(s.precision > 0)) fail(t.where, "precision must be positive");
+    } else if (t.is_word("slice")) {
+      raw_next();
+      s.slice_normal = vector4();
+      accept(",");
+      s.slice_distance = parse_float();
+    } else {
+      break;
+    }
+  }
+  return finish_shape(std::move(o), keyword, [&] { return shapes::julia_fractal(s); });
 }
 
 }  // namespace snell::sdl

@@ -73,4 +73,8 @@ ShapePtr height_field(geometry::HeightGrid grid, bool smooth, double water_level
   return std::make_shared<geometry::HeightField>(std::move(grid), smooth, water_level);
 }
 
+ShapePtr julia_fractal(const geometry::JuliaFractal::Settings& settings) {
+  return std::make_shared<geometry::JuliaFractal>(settings);
+}
+
 }  // namespace snell::sdl::shapes

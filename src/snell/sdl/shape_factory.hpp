@@ -7,6 +7,7 @@
 #include "snell/geometry/blob.hpp"
 #include "snell/geometry/height_field.hpp"
 #include "snell/geometry/isosurface.hpp"
+#include "snell/geometry/julia_fractal.hpp"
 #include "snell/geometry/mesh.hpp"
 #include "snell/geometry/shape.hpp"
 
@@ -35,5 +36,6 @@ ShapePtr quadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear, dou
 std::shared_ptr<const geometry::Isosurface> isosurface(geometry::IsosurfaceSettings settings);
 ShapePtr superellipsoid(double east_west, double north_south);
 ShapePtr height_field(geometry::HeightGrid grid, bool smooth, double water_level);
+ShapePtr julia_fractal(const geometry::JuliaFractal::Settings& settings);
 
 }  // namespace snell::sdl::shapes
