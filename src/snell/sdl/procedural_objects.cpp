@@ -35,9 +35,7 @@ std::string gradient_warning(const std::string& where, const geometry::Isosurfac
 ParsedObject Parser::finish_shape(ParsedObject o, const Token& keyword,
                                   const std::function<std::shared_ptr<const geometry::Shape>()>& make) {
   try {
-    o.shape = make();
-  } catch (const ParseError&) {
-    throw;
+    o.shape = make();  // geometry only: the tokens were read before
   } catch (const std::exception& e) {
     fail(keyword.where, e.what());
   }
