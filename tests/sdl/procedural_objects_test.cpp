@@ -55,6 +55,18 @@ TEST(ProceduralObjectsParse, IsosurfaceGradientWarningAfterRendering) {
   ASSERT_TRUE(hit_t(s, {{0.5, 0, 0}, {-1, 0, 0}, 0}, t));
   ASSERT_EQ(s.render_notes.size(), 1u);
   EXPECT_NE(s.render_notes[0]().find("maximum gradient found was 20.000"), std::string::npos);
+  EXPECT_NE(s.render_notes[0]().find("holes"), std::string::npos);
+}
+
+TEST(ProceduralObjectsParse, IsosurfaceFarTooHighGradientIsReported) {
+  const auto s = parse("isosurface { function { x } max_gradient 50 }");
+  double t = 0;
+  ASSERT_TRUE(hit_t(s, {{0.5, 0, 0}, {-1, 0, 0}, 0}, t));
+  EXPECT_NE(s.render_notes.at(0)().find("faster"), std::string::npos);
+  // A well-chosen bound gives no advice.
+  const auto fine = parse("isosurface { function { x } max_gradient 1.1 }");
+  ASSERT_TRUE(hit_t(fine, {{0.5, 0, 0}, {-1, 0, 0}, 0}, t));
+  EXPECT_EQ(fine.render_notes.at(0)(), "");
 }
 
 TEST(ProceduralObjectsParse, IsosurfaceErrors) {

@@ -29,8 +29,8 @@ double Isosurface::field(const Vec3& p) const {
 }
 
 void Isosurface::note_slope(double slope) const {
-  double seen = overshoot_.load(std::memory_order_relaxed);
-  while (slope > seen && !overshoot_.compare_exchange_weak(seen, slope, std::memory_order_relaxed)) {
+  double seen = steepest_.load(std::memory_order_relaxed);
+  while (slope > seen && !steepest_.compare_exchange_weak(seen, slope, std::memory_order_relaxed)) {
   }
 }
 
@@ -77,6 +77,7 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
 
   const MarchSettings march{lipschitz, accuracy, 0.1 * accuracy};
   bool more = true;
+  double steepest = 0;  // per ray, so the shared maximum is touched once per ray
   gt = march_roots(
       g, t, gt, hi, march,
       [&](double root) {
@@ -84,7 +85,8 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
         more = ++found < limit;
         return more;
       },
-      [&](double slope) { note_slope(slope / speed); });
+      [&](double slope) { steepest = std::max(steepest, slope); });
+  note_slope(steepest / speed);
   if (!more) return;
   if (!settings_.open && exit.t < t_max && gt < 0) sink(exit);
 }

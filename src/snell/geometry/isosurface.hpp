@@ -41,9 +41,9 @@ class Isosurface final : public Shape {
 
   /// f(p) - threshold: negative inside.
   double field(const Vec3& p) const;
-  /// The largest slope seen along rays so far when it exceeded max_gradient, else 0 (POV-Ray warns
-  /// about it after rendering: the surface may have holes).
-  double gradient_overshoot() const { return overshoot_.load(std::memory_order_relaxed); }
+  /// The steepest slope |grad f| seen between samples along rays so far (POV-Ray compares it with
+  /// max_gradient after rendering: steeper means holes, much gentler means wasted time).
+  double steepest_slope() const { return steepest_.load(std::memory_order_relaxed); }
   const IsosurfaceSettings& settings() const { return settings_; }
 
  private:
@@ -54,7 +54,7 @@ class Isosurface final : public Shape {
   void note_slope(double slope) const;
 
   IsosurfaceSettings settings_;
-  mutable std::atomic<double> overshoot_{0};
+  mutable std::atomic<double> steepest_{0};
 };
 
 /// POV-Ray's `evaluate P0, P1, P2` asks for an adaptive max_gradient. snell stays deterministic by

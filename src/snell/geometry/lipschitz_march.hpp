@@ -39,15 +39,14 @@ double refine_root(const G& g, double t0, double g0, double t1, double g1, doubl
 }
 
 /// Marches from t (where g = gt) to hi and calls on_root(t_root) at each sign change until it returns
-/// false. on_slope(s) hears every observed |dg/dt| above the bound. Returns g at the last point visited.
+/// false. on_slope(s) hears the secant slope |dg/dt| of every step. Returns g at the last point visited.
 template <typename G, typename OnRoot, typename OnSlope>
 double march_roots(const G& g, double t, double gt, double hi, const MarchSettings& s, OnRoot&& on_root,
                    OnSlope&& on_slope) {
   while (t < hi) {
     const double t1 = std::min(hi, t + std::max(std::fabs(gt) / s.lipschitz, s.min_step));
     const double g1 = g(t1);
-    const double rise = std::fabs(g1 - gt);
-    if (rise > s.lipschitz * (t1 - t)) on_slope(rise / (t1 - t));
+    if (t1 > t) on_slope(std::fabs(g1 - gt) / (t1 - t));
     if ((gt < 0) != (g1 < 0) && !on_root(refine_root(g, t, gt, t1, g1, s.tolerance))) return g1;
     t = t1, gt = g1;
   }

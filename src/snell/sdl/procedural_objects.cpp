@@ -17,16 +17,22 @@ namespace snell::sdl {
 
 namespace {
 
-/// POV-Ray's warning after rendering when rays met steeper slopes than max_gradient (isosurface.cpp).
+/// POV-Ray's warnings after rendering when the slopes met along rays disagree with max_gradient: steeper
+/// (holes likely) or much gentler (slower than needed), with the thresholds of POV-Ray's isosurface.cpp.
 std::string gradient_warning(const std::string& where, const geometry::Isosurface& iso) {
-  const double found = iso.gradient_overshoot();
-  if (found <= 0) return {};
+  const double found = iso.steepest_slope(), set = iso.settings().max_gradient;
+  if (!(found > 1e-10)) return {};
+  const double diff = set - found, ratio = set / found;
+  const char* advice = nullptr;
+  if ((ratio <= 0.9 && diff <= -0.5) || ((ratio <= 0.95 || diff <= -0.1) && set < 10))
+    advice = "the isosurface may contain holes; raise max_gradient";
+  else if (diff >= 10 || (ratio >= 1.1 && diff >= 0.5))
+    advice = "lower max_gradient for a faster render";
+  if (!advice) return {};
   char text[256];
-  std::snprintf(
-      text, sizeof text,
-      "%s: warning: the maximum gradient found was %.3f, but max_gradient of the isosurface was set to "
-      "%.3f; the isosurface may contain holes (raise max_gradient)",
-      where.c_str(), found, iso.settings().max_gradient);
+  std::snprintf(text, sizeof text,
+                "%s: warning: the maximum gradient found was %.3f, but max_gradient was set to %.3f; %s",
+                where.c_str(), found, set, advice);
   return text;
 }
 
@@ -124,7 +130,8 @@ ParsedObject Parser::parse_isosurface(const Token& keyword) {
   return finish_shape(std::move(o), keyword, [&] {
     auto iso = shapes::isosurface(std::move(s));
     const std::string where = keyword.where.to_string();
-    scene_.render_notes.push_back([where, iso] { return gradient_warning(where, *iso); });
+    // With `evaluate` the gradient was measured, so there is nothing to advise (as in POV-Ray).
+    if (!evaluate) scene_.render_notes.push_back([where, iso] { return gradient_warning(where, *iso); });
     return iso;
   });
 }
