@@ -237,6 +237,9 @@ int render(CliOptions& o) {
     checkpoint.remove();
   const double write_s = seconds_since(t_write);
 
+  if (!o.quiet)
+    for (const auto& note : scene.render_notes)
+      if (const std::string text = note(); !text.empty()) fmt::print(stderr, "{}\n", text);
   if (!o.quiet || o.stats) {
     const render::RayCounters& r = result.rays;
     fmt::print(stderr,

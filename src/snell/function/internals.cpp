@@ -5,11 +5,14 @@
 #include <cmath>
 #include <string>
 
+#include "snell/math/constants.hpp"
 #include "snell/texture/perlin_noise.hpp"
 
 namespace snell::function {
 
 namespace {
+
+using math::kPi;
 
 // Formulas from the functions.inc documentation (POV-Ray 3.7 reference, "Internal Functions").
 // Arguments: a[0..2] = x, y, z; a[3..] = the extra parameters in documented order.
@@ -58,11 +61,70 @@ double f_torus(const double* a) {  // 70: major radius, minor radius; torus in t
   return std::sqrt(ring * ring + a[1] * a[1]) - a[4];
 }
 
+/// POV-Ray's Noise() in about [0, 1]. snell uses Perlin's improved noise mapped to [0, 1] (as its bozo
+/// pattern does) for every noise generator, so values differ pointwise from POV-Ray's lattice noise but
+/// share range, mean and feature size.
+double noise01(double x, double y, double z) {
+  return std::clamp(0.5 + 0.5 * texture::improved_perlin_noise(x, y, z), 0.0, 1.0);
+}
+
 double f_noise3d(const double* a) {  // 76
-  // POV-Ray's Noise() returns about [0, 1]; snell uses Perlin's improved noise mapped to [0, 1] (as
-  // its bozo pattern does), so values differ pointwise from POV-Ray's lattice noise but share range,
-  // mean and feature size.
-  return std::clamp(0.5 + 0.5 * texture::improved_perlin_noise(a[0], a[1], a[2]), 0.0, 1.0);
+  return noise01(a[0], a[1], a[2]);
+}
+
+double f_noise_generator(const double* a) {  // 78: the generator number (a[3]) picks POV-Ray's variant
+  return noise01(a[0], a[1], a[2]);
+}
+
+double f_helix1(const double* a) {  // 25
+  // Parameters (functions.inc): helix count, period, minor radius, major radius, shape (stretch along
+  // y), cross section (1 circle, 2 diamond, 0 square, else a superellipse exponent), section rotation in
+  // degrees. The distance to the nearest tube is measured in a frame that winds with the helix: radial
+  // offset from the major radius, and the angular offset to the nearest turn turned into length along y.
+  const double count = a[3], period = a[4], minor = a[5], major = a[6], shape = a[7], section = a[8];
+  const double r = std::sqrt(a[0] * a[0] + a[2] * a[2]);
+  const double x = (a[0] == 0 && a[2] == 0) ? 1e-6 : a[0];
+  double turn = std::fmod(std::atan2(a[2], x) * count + a[1] * period * count, 2 * kPi);
+  if (turn < 0) turn += 2 * kPi;
+  double u = r - major, v = (turn - kPi) / shape / (period * count);
+  double section_radius;
+  if (section == 1) {
+    section_radius = std::sqrt(u * u + v * v);
+  } else {
+    if (a[9] != 0) {
+      const double c = std::cos(a[9] * kPi / 180), s = std::sin(a[9] * kPi / 180);
+      const double ur = u * c - v * s;
+      v = u * s + v * c;
+      u = ur;
+    }
+    section_radius = section == 0
+                         ? std::max(std::fabs(u), std::fabs(v))
+                         : std::pow(std::pow(std::fabs(u), 2 / section) + std::pow(std::fabs(v), 2 / section),
+                                    section / 2);
+  }
+  return std::min(major + r, section_radius) - minor;
+}
+
+double f_ridged_mf(const double* a) {  // 59
+  // Musgrave's ridged multifractal (Ebert et al., "Texturing and Modeling", 3rd ed., ch. 16): parameters
+  // H, lacunarity, octaves, offset, gain, noise generator. Each octave is (offset - |2 noise - 1|)^2,
+  // weighted by the previous octave's value times gain (clamped to [0, 1]) and by frequency^-H.
+  const double h = a[3], lacunarity = a[4], offset = a[6], gain = a[7];
+  const int octaves = static_cast<int>(std::clamp(a[5], 0.0, 64.0));
+  const auto ridge = [&](double x, double y, double z) {
+    const double r = offset - std::fabs(2 * noise01(x, y, z) - 1);
+    return r * r;
+  };
+  double x = a[0], y = a[1], z = a[2];
+  double signal = ridge(x, y, z), result = signal, frequency = 1;
+  for (int i = 1; i < octaves; ++i) {
+    x *= lacunarity, y *= lacunarity, z *= lacunarity;
+    frequency *= lacunarity;
+    const double weight = std::clamp(signal * gain, 0.0, 1.0);
+    signal = ridge(x, y, z) * weight;
+    result += signal * std::pow(frequency, -h);
+  }
+  return result;
 }
 
 struct Entry {
@@ -98,7 +160,7 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_glob", 1, nullptr},
     {"f_heart", 1, nullptr},
     {"f_helical_torus", 10, nullptr},
-    {"f_helix1", 7, nullptr},
+    {"f_helix1", 7, f_helix1},
     {"f_helix2", 7, nullptr},
     {"f_hex_x", 1, nullptr},
     {"f_hex_y", 1, nullptr},
@@ -132,7 +194,7 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_quartic_cylinder", 3, nullptr},
     {"f_r", 0, f_r},
     {"f_ridge", 6, nullptr},
-    {"f_ridged_mf", 6, nullptr},
+    {"f_ridged_mf", 6, f_ridged_mf},
     {"f_rounded_box", 4, f_rounded_box},
     {"f_sphere", 1, f_sphere},
     {"f_spikes", 5, nullptr},
@@ -151,7 +213,7 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_witch_of_agnesi_2d", 6, nullptr},
     {"f_noise3d", 0, f_noise3d},
     {"f_pattern", 0, nullptr},
-    {"f_noise_generator", 1, nullptr},
+    {"f_noise_generator", 1, f_noise_generator},
 }};
 
 }  // namespace

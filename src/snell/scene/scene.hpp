@@ -1,7 +1,9 @@
 #pragma once
 // The scene as the renderer sees it: built once (by the SDL parser, a procedural generator or C++ code),
 // immutable while rendering, read by every thread without locks.
+#include <functional>
 #include <memory>
+#include <string>
 #include <optional>
 #include <vector>
 
@@ -40,6 +42,9 @@ struct Scene {
   material::Rgbft background;
   std::optional<SkySphere> sky_sphere;
   GlobalSettings settings;
+  /// Checks to run after rendering, each returning a warning or an empty string (e.g. an isosurface whose
+  /// rays met slopes steeper than its max_gradient).
+  std::vector<std::function<std::string()>> render_notes;
 
   /// The gamma the output is encoded relative to: POV-Ray 3.7 reads colours as linear under
   /// `assumed_gamma 1`, and without any assumed_gamma below #version 3.7 does no gamma handling.

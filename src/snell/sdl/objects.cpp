@@ -28,7 +28,8 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   if (t.kind != Token::Kind::identifier) return std::nullopt;
   const std::string& w = t.text;
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
-      w == "blob" || w == "mesh" || w == "light_source" || w == "object") {
+      w == "blob" || w == "mesh" || w == "light_source" || w == "object" || w == "isosurface" ||
+      w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" || w == "julia_fractal") {
     raw_next();
     return parse_object(t);
   }
@@ -40,8 +41,7 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
       return o;
     }
   }
-  if (w == "mesh2" || w == "superellipsoid" || w == "height_field" || w == "isosurface" ||
-      w == "julia_fractal" || w == "parametric" || w == "bicubic_patch" || w == "lemon" || w == "ovus")
+  if (w == "mesh2" || w == "parametric" || w == "lemon" || w == "ovus")
     fail(t.where, "the object '" + w + "' is not supported yet");
   return std::nullopt;
 }
@@ -60,6 +60,16 @@ ParsedObject Parser::parse_object(const Token& keyword) {
     o = parse_mesh(keyword);
   } else if (w == "light_source") {
     o = parse_light(keyword);
+  } else if (w == "isosurface") {
+    o = parse_isosurface(keyword);
+  } else if (w == "superellipsoid") {
+    o = parse_superellipsoid(keyword);
+  } else if (w == "height_field") {
+    o = parse_height_field(keyword);
+  } else if (w == "bicubic_patch") {
+    o = parse_bicubic_patch(keyword);
+  } else if (w == "julia_fractal") {
+    o = parse_julia_fractal(keyword);
   } else if (w == "object") {
     expect("{", "object");
     const Token& inner = peek();

@@ -5,6 +5,7 @@
 // expressions.cpp (floats, vectors, colours, strings), materials.cpp, objects.cpp, scene_items.cpp.
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -256,6 +257,15 @@ class Parser {
   std::vector<math::Vec2> parse_points_2d(int count);
   void skip_sturm();
   ParsedObject parse_light(const Token& keyword);
+  // procedural_objects.cpp, height_field.cpp
+  ParsedObject parse_isosurface(const Token& keyword);
+  ParsedObject parse_superellipsoid(const Token& keyword);
+  ParsedObject parse_height_field(const Token& keyword);
+  ParsedObject parse_bicubic_patch(const Token& keyword);
+  ParsedObject parse_julia_fractal(const Token& keyword);
+  /// Sets o.shape from `make` (whose exceptions become errors at `keyword`), then reads the modifiers.
+  ParsedObject finish_shape(ParsedObject o, const Token& keyword,
+                            const std::function<std::shared_ptr<const geometry::Shape>()>& make);
   void parse_object_modifiers(ParsedObject& object);
   bool parse_object_modifier(ParsedObject& object);
   /// clipped_by { ... } / bounded_by { ... } after its keyword.

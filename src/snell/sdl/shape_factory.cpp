@@ -11,6 +11,7 @@
 #include "snell/geometry/quadric.hpp"
 #include "snell/geometry/sor.hpp"
 #include "snell/geometry/sphere.hpp"
+#include "snell/geometry/superellipsoid.hpp"
 #include "snell/geometry/text_outline.hpp"
 #include "snell/geometry/torus.hpp"
 #include "snell/geometry/triangle.hpp"
@@ -95,6 +96,22 @@ ShapePtr blob(double threshold, std::vector<geometry::BlobComponent> components)
 
 ShapePtr quadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear, double constant) {
   return std::make_shared<geometry::Quadric>(squares, mixed, linear, constant);
+}
+
+std::shared_ptr<const geometry::Isosurface> isosurface(geometry::IsosurfaceSettings settings) {
+  return std::make_shared<geometry::Isosurface>(std::move(settings));
+}
+
+ShapePtr superellipsoid(double east_west, double north_south) {
+  return std::make_shared<geometry::Superellipsoid>(east_west, north_south);
+}
+
+ShapePtr height_field(geometry::HeightGrid grid, bool smooth, double water_level) {
+  return std::make_shared<geometry::HeightField>(std::move(grid), smooth, water_level);
+}
+
+ShapePtr julia_fractal(const geometry::JuliaFractal::Settings& settings) {
+  return std::make_shared<geometry::JuliaFractal>(settings);
 }
 
 }  // namespace snell::sdl::shapes

@@ -7,6 +7,9 @@
 #include <vector>
 
 #include "snell/geometry/blob.hpp"
+#include "snell/geometry/height_field.hpp"
+#include "snell/geometry/isosurface.hpp"
+#include "snell/geometry/julia_fractal.hpp"
 #include "snell/geometry/mesh.hpp"
 #include "snell/geometry/prism.hpp"
 #include "snell/geometry/shape.hpp"
@@ -43,5 +46,11 @@ ShapePtr mesh(geometry::MeshData data);
 ShapePtr blob(double threshold, std::vector<geometry::BlobComponent> components);
 /// POV-Ray quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }.
 ShapePtr quadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear, double constant);
+
+/// Returned as an Isosurface so the caller can read its gradient statistics after rendering.
+std::shared_ptr<const geometry::Isosurface> isosurface(geometry::IsosurfaceSettings settings);
+ShapePtr superellipsoid(double east_west, double north_south);
+ShapePtr height_field(geometry::HeightGrid grid, bool smooth, double water_level);
+ShapePtr julia_fractal(const geometry::JuliaFractal::Settings& settings);
 
 }  // namespace snell::sdl::shapes

@@ -1,0 +1,133 @@
+#include "snell/geometry/isosurface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "snell/geometry/lipschitz_march.hpp"
+#include "snell/math/constants.hpp"
+
+namespace snell::geometry {
+
+Isosurface::Isosurface(IsosurfaceSettings settings) : settings_(std::move(settings)) {
+  if (!settings_.function) throw std::invalid_argument("isosurface: missing function");
+  if (settings_.function->arity() != 3)
+    throw std::invalid_argument("isosurface: the function must take three arguments (x, y, z)");
+  if (!settings_.container) throw std::invalid_argument("isosurface: missing container");
+  if (!(settings_.accuracy > 0)) throw std::invalid_argument("isosurface: accuracy must be positive");
+  if (!(settings_.max_gradient > 0)) throw std::invalid_argument("isosurface: max_gradient must be positive");
+  if (settings_.max_trace < 1) settings_.max_trace = 1;
+}
+
+Bounds3 Isosurface::bounds() const {
+  return settings_.container->bounds();
+}
+
+double Isosurface::field(const Vec3& p) const {
+  const double args[3] = {p.x, p.y, p.z};
+  return settings_.function->call(args) - settings_.threshold;
+}
+
+void Isosurface::note_slope(double slope) const {
+  double seen = steepest_.load(std::memory_order_relaxed);
+  while (slope > seen && !steepest_.compare_exchange_weak(seen, slope, std::memory_order_relaxed)) {
+  }
+}
+
+LocalHit Isosurface::surface_hit(const Ray& ray, double t) const {
+  // Forward differences with step `accuracy`, as POV-Ray's IsoSurface::Normal: f grows outwards.
+  LocalHit hit;
+  hit.t = t;
+  const Vec3 p = ray.at(t);
+  const double h = settings_.accuracy;
+  const double f0 = field(p);
+  hit.normal = {field(p + Vec3(h, 0, 0)) - f0, field(p + Vec3(0, h, 0)) - f0, field(p + Vec3(0, 0, h)) - f0};
+  if (!(length_squared(hit.normal) > 0) || !is_finite(hit.normal)) hit.normal = -ray.direction;
+  return hit;
+}
+
+template <typename Sink>
+void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Sink&& sink) const {
+  const Shape& box = *settings_.container;
+  LocalHit entry, exit;
+  if (!box.intersect(ray, -math::kInfinity, math::kInfinity, entry)) return;
+  if (!box.intersect(ray, entry.t, math::kInfinity, exit)) return;  // grazes the container
+  const double lo = std::max(entry.t, t_min), hi = std::min(exit.t, t_max);
+  if (!(lo < hi)) return;
+
+  const double speed = length(ray.direction);  // local length per unit of t
+  const double accuracy = settings_.accuracy;  // in t, as POV-Ray compares ray-parameter intervals
+  const double lipschitz = settings_.max_gradient * speed;  // bound on |dg/dt|
+  const auto g = [&](double t) { return field(ray.at(t)); };
+  int found = 0;
+
+  double t = lo, gt = g(t);
+  if (entry.t > t_min) {
+    // The ray enters the container: where the inside reaches the container wall, the wall is the surface.
+    if (!settings_.open && gt < 0) {
+      sink(entry);
+      if (++found >= limit) return;
+    }
+  } else if (std::fabs(gt) < 4 * lipschitz * accuracy) {
+    // The ray starts on the surface (a shadow or reflected ray leaving it): step off it first, as POV-Ray
+    // does, so that the root it came from is not found again.
+    t = std::min(lo + 5 * accuracy, hi);
+    gt = g(t);
+  }
+
+  const MarchSettings march{lipschitz, accuracy, 0.1 * accuracy};
+  bool more = true;
+  double steepest = 0;  // per ray, so the shared maximum is touched once per ray
+  gt = march_roots(
+      g, t, gt, hi, march,
+      [&](double root) {
+        sink(surface_hit(ray, root));
+        more = ++found < limit;
+        return more;
+      },
+      [&](double slope) { steepest = std::max(steepest, slope); });
+  note_slope(steepest / speed);
+  if (!more) return;
+  if (!settings_.open && exit.t < t_max && gt < 0) sink(exit);
+}
+
+bool Isosurface::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
+  bool any = false;
+  trace(ray, t_min, t_max, 1, [&](const LocalHit& h) {
+    hit = h;
+    any = true;
+  });
+  return any;
+}
+
+void Isosurface::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
+  trace(ray, t_min, t_max, settings_.max_trace, [&](const LocalHit& h) { hits.push_back(h); });
+}
+
+bool Isosurface::inside(const Vec3& p) const {
+  return settings_.container->inside(p) && field(p) < 0;
+}
+
+double estimate_max_gradient(const function::Function& f, const Bounds3& box, double floor, double factor) {
+  // A 24^3 lattice of forward differences: deterministic, and cheap next to rendering.
+  constexpr int kSteps = 24;
+  const Vec3 cell = box.extent() / kSteps;
+  const auto eval = [&](const Vec3& p) {
+    const double a[3] = {p.x, p.y, p.z};
+    return f.call(a);
+  };
+  double steepest = 0;
+  for (int i = 0; i < kSteps; ++i)
+    for (int j = 0; j < kSteps; ++j)
+      for (int k = 0; k < kSteps; ++k) {
+        const Vec3 p = box.lo + cell * Vec3(i, j, k);
+        const double f0 = eval(p);
+        const Vec3 grad = {(eval(p + Vec3(cell.x, 0, 0)) - f0) / cell.x,
+                           (eval(p + Vec3(0, cell.y, 0)) - f0) / cell.y,
+                           (eval(p + Vec3(0, 0, cell.z)) - f0) / cell.z};
+        if (is_finite(grad)) steepest = std::max(steepest, length(grad));
+      }
+  return std::max(floor, steepest * factor);
+}
+
+}  // namespace snell::geometry

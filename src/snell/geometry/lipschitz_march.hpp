@@ -1,0 +1,56 @@
+#pragma once
+// Root finding along a ray for implicit surfaces g(t) = 0 whose slope is bounded, |dg/dt| <= L: sphere
+// tracing (Hart 1996, "Sphere tracing: a geometric method for the antialiased ray tracing of implicit
+// surfaces", The Visual Computer 12(10)) to bracket each sign change, then Illinois regula falsi (Dowell &
+// Jarratt 1971) to refine it. Shared by isosurface and superellipsoid.
+#include <algorithm>
+#include <cmath>
+
+namespace snell::geometry {
+
+struct MarchSettings {
+  /// Bound on |dg/dt| along this ray.
+  double lipschitz = 1;
+  /// Smallest step in t, so that grazing rays still progress; features thinner than this may be missed.
+  double min_step = 1e-3;
+  /// Roots are refined until their bracket is narrower than this.
+  double tolerance = 1e-4;
+};
+
+/// Illinois regula falsi on g(t0), g(t1) of opposite signs; at most 60 steps bound the work when g jumps.
+template <typename G>
+double refine_root(const G& g, double t0, double g0, double t1, double g1, double tolerance) {
+  int side = 0;
+  for (int i = 0; i < 60 && std::fabs(t1 - t0) > tolerance; ++i) {
+    double t = (t0 * g1 - t1 * g0) / (g1 - g0);
+    if (!(t > std::min(t0, t1) && t < std::max(t0, t1))) t = 0.5 * (t0 + t1);  // round-off guard
+    const double gt = g(t);
+    if ((gt < 0) == (g1 < 0)) {
+      t1 = t, g1 = gt;
+      if (side == -1) g0 *= 0.5;  // the Illinois step: halve the stale end so both ends move
+      side = -1;
+    } else {
+      t0 = t, g0 = gt;
+      if (side == 1) g1 *= 0.5;
+      side = 1;
+    }
+  }
+  return g1 == g0 ? 0.5 * (t0 + t1) : (t0 * g1 - t1 * g0) / (g1 - g0);
+}
+
+/// Marches from t (where g = gt) to hi and calls on_root(t_root) at each sign change until it returns
+/// false. on_slope(s) hears the secant slope |dg/dt| of every step. Returns g at the last point visited.
+template <typename G, typename OnRoot, typename OnSlope>
+double march_roots(const G& g, double t, double gt, double hi, const MarchSettings& s, OnRoot&& on_root,
+                   OnSlope&& on_slope) {
+  while (t < hi) {
+    const double t1 = std::min(hi, t + std::max(std::fabs(gt) / s.lipschitz, s.min_step));
+    const double g1 = g(t1);
+    if (t1 > t) on_slope(std::fabs(g1 - gt) / (t1 - t));
+    if ((gt < 0) != (g1 < 0) && !on_root(refine_root(g, t, gt, t1, g1, s.tolerance))) return g1;
+    t = t1, gt = g1;
+  }
+  return gt;
+}
+
+}  // namespace snell::geometry
