@@ -165,3 +165,32 @@ TEST(SdlLeniency, LightSourceStartsFromADeclaredLight) {
 
 }  // namespace
 }  // namespace snell::sdl
+
+namespace snell::sdl {
+namespace {
+
+TEST(SdlLimits, HostileStringArgumentsGiveErrorsNotCrashes) {
+  EXPECT_NE(test::error_of("#debug chr(1e300)").find("character code"), std::string::npos);
+  EXPECT_NE(test::error_of("#debug datetime(1e300)").find("datetime needs"), std::string::npos);
+  EXPECT_NE(test::error_of("#debug substr(\"abc\", 1e10, 1e10)").find("reaches outside"), std::string::npos);
+  EXPECT_EQ(test::error_of("#debug str(1e300, 1e20, 1e20)"), "");
+  EXPECT_NE(test::error_of("#declare S = \"xxxxxxxxxxxxxxxx\";\n#while (1) #declare S = concat(S, S); #end")
+                .find("string longer than"),
+            std::string::npos);
+}
+
+TEST(SdlLimits, LoopIterationLimitIsAnError) {
+  ParseOptions options;
+  options.max_while_iterations = 1000;
+  try {
+    parse_scene_string("#declare I = 0;\n#while (I < 5000) #declare I = I + 1; #end", "loop.pov", options);
+    FAIL() << "expected an error";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("loop.pov:2:1: error: #while loop ran more than 1000"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace snell::sdl
