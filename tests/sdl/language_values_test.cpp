@@ -47,23 +47,28 @@ TEST(SdlSplines, LinearInterpolatesAndHoldsItsEnds) {
 TEST(SdlSplines, QuadraticFitsAParabolaThroughThreePoints) {
   // Points of y = t^2: the parabola is exact on both segments.
   const std::string s = "#declare S = spline { quadratic_spline 0, 0, 1, 1, 2, 4 }";
-  EXPECT_NEAR(value_of(s, "S(1.5)"), 2.25, 1e-12);
-  EXPECT_NEAR(value_of(s, "S(0.5)"), 0.25, 1e-12);
+  EXPECT_NEAR(value_of(s, "S(1.5).x"), 2.25, 1e-12);
+  EXPECT_NEAR(value_of(s, "S(0.5).x"), 0.25, 1e-12);
 }
 
 TEST(SdlSplines, CubicIsCatmullRomBetweenTheInnerPoints) {
   // Catmull-Rom reproduces a quadratic on evenly spaced points; before the second point it holds it.
   const std::string s = "#declare S = spline { cubic_spline 0, 0, 1, 1, 2, 4, 3, 9 }";
-  EXPECT_NEAR(value_of(s, "S(1.5)"), 2.25, 1e-12);
-  EXPECT_NEAR(value_of(s, "S(0.5)"), 1, 1e-12);
-  EXPECT_NEAR(value_of(s, "S(1.5, linear_spline)"), 2.5, 1e-12);
+  EXPECT_NEAR(value_of(s, "S(1.5).x"), 2.25, 1e-12);
+  EXPECT_NEAR(value_of(s, "S(0.5).x"), 1, 1e-12);
+  EXPECT_NEAR(value_of(s, "S(1.5, linear_spline).x"), 2.5, 1e-12);
+}
+
+TEST(SdlSplines, FloatValuesBecomeTwoVectorsAsInPovRay) {
+  // POV-Ray promotes a float spline value v to <v, v>: `F(t).y` is valid and equals `F(t).x`.
+  EXPECT_DOUBLE_EQ(value_of("#declare F = spline { 0, 1, 1, 3 }", "F(0.5).x + F(0.5).y * 10"), 22);
 }
 
 TEST(SdlSplines, NaturalHasZeroCurvatureAtItsEnds) {
   // Through (0,0) (1,1) (2,0): S = 1.5 t - 0.5 t^3 on [0,1], so S(0.5) = 0.6875.
   const std::string s = "#declare S = spline { natural_spline 0, 0, 1, 1, 2, 0 }";
-  EXPECT_NEAR(value_of(s, "S(0.5)"), 0.6875, 1e-12);
-  EXPECT_NEAR(value_of(s, "S(1.5)"), 0.6875, 1e-12);
+  EXPECT_NEAR(value_of(s, "S(0.5).x"), 0.6875, 1e-12);
+  EXPECT_NEAR(value_of(s, "S(1.5).x"), 0.6875, 1e-12);
 }
 
 TEST(SdlSplines, PassedToAMacroAndCopied) {
@@ -161,6 +166,35 @@ TEST(SdlLeniency, LightSourceStartsFromADeclaredLight) {
   ASSERT_EQ(scene.lights.size(), 1u);
   EXPECT_EQ(scene.lights[0].position, math::Vec3(2, 2, 3));
   EXPECT_EQ(scene.lights[0].color, math::Color(0.5));
+}
+
+}  // namespace
+}  // namespace snell::sdl
+
+namespace snell::sdl {
+namespace {
+
+TEST(SdlLimits, HostileStringArgumentsGiveErrorsNotCrashes) {
+  EXPECT_NE(test::error_of("#debug chr(1e300)").find("character code"), std::string::npos);
+  EXPECT_NE(test::error_of("#debug datetime(1e300)").find("datetime needs"), std::string::npos);
+  EXPECT_NE(test::error_of("#debug substr(\"abc\", 1e10, 1e10)").find("reaches outside"), std::string::npos);
+  EXPECT_EQ(test::error_of("#debug str(1e300, 1e20, 1e20)"), "");
+  EXPECT_NE(test::error_of("#declare S = \"xxxxxxxxxxxxxxxx\";\n#while (1) #declare S = concat(S, S); #end")
+                .find("string longer than"),
+            std::string::npos);
+}
+
+TEST(SdlLimits, LoopIterationLimitIsAnError) {
+  ParseOptions options;
+  options.max_while_iterations = 1000;
+  try {
+    parse_scene_string("#declare I = 0;\n#while (I < 5000) #declare I = I + 1; #end", "loop.pov", options);
+    FAIL() << "expected an error";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("loop.pov:2:1: error: #while loop ran more than 1000"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

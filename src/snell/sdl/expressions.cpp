@@ -700,7 +700,8 @@ Numeric Parser::parse_function(const Token& name) {
   if (f == "vturbulence") {
     // vturbulence(Lambda, Omega, Octaves, V): the displacement a turbulence warp would apply at V.
     need(4);
-    return of_vec(texture::vector_turbulence(vec(3), std::clamp(static_cast<int>(a(2)), 1, 10), a(1), a(0)));
+    return of_vec(texture::vector_turbulence(
+        vec(3), static_cast<int>(std::clamp(a(2) == a(2) ? a(2) : 1.0, 1.0, 10.0)), a(1), a(0)));
   }
   if (f == "select") {
     if (args.size() == 3) return a(0) < 0 ? args[1] : args[2];

@@ -135,14 +135,19 @@ void Parser::directive_write(const Token&) {
   UserFile& file = user_file(handle);
   if (!file.output) fail(handle.where, "file '" + handle.text + "' is open for reading, not writing");
   const auto out = file.output;  // items may run macros that close the handle
+  const auto write = [&](const std::string& text) {
+    // Bounded output: a runaway loop may not fill the disk.
+    bytes_written_ += text.size();
+    if (bytes_written_ > kMaxBytesWritten)
+      fail(handle.where,
+           "#write: the scene wrote more than " + std::to_string(kMaxBytesWritten >> 20) + " MiB");
+    *out << text;
+  };
   // Commas are optional, as everywhere POV-Ray reads a list (its Parse_Comma): `#write (F Text)`.
   for (;;) {
     accept(",");
     if (peek().is_symbol(")")) break;
-    if (starts_string())
-      *out << parse_string();
-    else
-      *out << format_numeric(parse_numeric());
+    write(starts_string() ? parse_string() : format_numeric(parse_numeric()));
   }
   expect(")", "#write");
   out->flush();

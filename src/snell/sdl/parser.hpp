@@ -293,6 +293,8 @@ class Parser {
   std::vector<math::Pcg32> random_streams_;
   std::vector<std::map<std::string, Value>> scopes_;
   std::map<std::string, UserFile> user_files_;
+  size_t bytes_written_ = 0;
+  static constexpr size_t kMaxBytesWritten = size_t{256} << 20;
   int macro_depth_ = 0;
   /// Depth of recursive descent (expressions, objects, pigments, textures): hostile input such as 100000
   /// opening parentheses or 5000 nested unions gives a ParseError instead of a stack overflow.

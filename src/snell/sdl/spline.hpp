@@ -16,8 +16,8 @@ struct Spline {
   Kind kind = Kind::linear;
   /// Sorted by t; a later point with an equal t comes after the earlier one.
   std::vector<Point> points;
-  /// Components of the values: 1 for floats, 2..5 for vectors.
-  int size = 1;
+  /// Components of the values, 2..5 (float values are stored as <v, v>, as POV-Ray promotes them).
+  int size = 2;
 
   /// Inserts keeping `points` sorted by t.
   void add(double t, const std::array<double, 5>& value);

@@ -1,4 +1,6 @@
 // Parsing `spline { ... }` and calling a spline identifier (POV-Ray 3.7 reference, "Splines").
+#include <algorithm>
+
 #include "snell/sdl/parser.hpp"
 
 namespace snell::sdl {
@@ -37,12 +39,12 @@ std::shared_ptr<const Spline> Parser::parse_spline_block() {
     accept(",");
     const scene::SourceLocation where = peek().where;
     const Numeric value = parse_argument_numeric();
-    const int size = value.color ? 5 : value.size;
+    // A float value is promoted to the 2-vector <v, v>, as POV-Ray does: `Spline(t).x` reads it.
+    const int size = value.color ? 5 : std::max(value.size, 2);
     if (!spline->points.empty() && size != spline->size && value.size != 1)
       fail(where, "spline values must all have " + std::to_string(spline->size) + " components");
     if (spline->points.empty()) spline->size = size;
-    Numeric wide = value;
-    if (value.size == 1 && spline->size > 1) wide.size = spline->size;  // a float fills a vector
+    Numeric wide = value;  // Numeric::of fills every component, so a float reads as <v, v, ...>
     spline->add(at, wide.v);
     accept(",");
   }
@@ -67,7 +69,6 @@ Numeric Parser::call_spline(const Token& name, const Spline& spline) {
   r.v = spline.evaluate(t, kind);
   r.size = std::min(spline.size, 5);
   r.color = spline.size == 5;
-  if (r.size == 1) r = Numeric::of(r.v[0]);
   return r;
 }
 

@@ -25,6 +25,12 @@ std::string fixed_format(int width, int precision) {
   return format;
 }
 
+/// A float argument used as a count or width: NaN and huge values must not reach an int conversion.
+int whole(double v) {
+  if (!(v == v)) return 0;
+  return static_cast<int>(std::clamp(v, -1e9, 1e9));
+}
+
 std::string format_fixed(double value, int width, int precision) {
   char buffer[512];
   const int n = std::snprintf(buffer, sizeof buffer, fixed_format(width, precision).c_str(), value);
@@ -98,23 +104,23 @@ std::string Parser::parse_string_function(const Token& name) {
   if (f == "str") {
     const double value = parse_float();
     expect(",", "str");
-    const int width = static_cast<int>(parse_float());
+    const int width = whole(parse_float());
     expect(",", "str");
-    const int precision = static_cast<int>(parse_float());
+    const int precision = whole(parse_float());
     expect(")", "str");
     return format_fixed(value, width, precision);
   }
   if (f == "vstr") {
     // vstr(N, V, separator, width, precision): N (2..5) components, each formatted as str() does.
-    const int count = std::clamp(static_cast<int>(parse_float()), 2, 5);
+    const int count = std::clamp(whole(parse_float()), 2, 5);
     expect(",", "vstr");
     const Numeric v = parse_numeric();
     expect(",", "vstr");
     const std::string separator = parse_string();
     expect(",", "vstr");
-    const int width = static_cast<int>(parse_float());
+    const int width = whole(parse_float());
     expect(",", "vstr");
-    const int precision = static_cast<int>(parse_float());
+    const int precision = whole(parse_float());
     expect(")", "vstr");
     for (int i = 0; i < count; ++i) {
       const double c = v.size == 1 && !v.color ? v.x() : (i < (v.color ? 5 : v.size) ? v.v[size_t(i)] : 0);
@@ -125,6 +131,7 @@ std::string Parser::parse_string_function(const Token& name) {
   if (f == "datetime") {
     // datetime(days since 2000-01-01 [, strftime format]); POV-Ray formats in UTC.
     const double days = parse_float();
+    if (!(std::fabs(days) < 1e7)) fail(name.where, "datetime needs days within 10 million of 2000-01-01");
     std::string format = "%Y-%m-%d %H:%M:%SZ";
     if (accept(",")) format = parse_string();
     expect(")", "datetime");
@@ -140,17 +147,19 @@ std::string Parser::parse_string_function(const Token& name) {
   if (f == "chr") {
     const double c = parse_float();
     expect(")", "chr");
+    if (!(c >= 1 && c < 256)) fail(name.where, "chr needs a character code from 1 to 255");
     return std::string(1, static_cast<char>(static_cast<int>(c)));
   }
   if (f == "substr") {
     const std::string s = parse_string();
     expect(",", "substr");
     const scene::SourceLocation where = peek().where;
-    const int start = static_cast<int>(parse_float());
+    const int start = whole(parse_float());
     expect(",", "substr");
-    const int count = static_cast<int>(parse_float());
+    const int count = whole(parse_float());
     expect(")", "substr");
-    if (start < 1 || count < 0 || static_cast<size_t>(start - 1 + count) > s.size())
+    if (start < 1 || count < 0 ||
+        static_cast<long long>(start) - 1 + count > static_cast<long long>(s.size()))
       fail(where, "substr(\"" + s.substr(0, 40) + "\", " + std::to_string(start) + ", " +
                       std::to_string(count) + ") reaches outside the string");
     return s.substr(static_cast<size_t>(start - 1), static_cast<size_t>(count));

@@ -309,7 +309,7 @@ void Parser::directive_end(const Token& d) {
     case Cond::Kind::while_: {
       if (++c.iterations >= options_.max_while_iterations)
         fail(c.where, "#while loop ran more than " + std::to_string(options_.max_while_iterations) +
-                          " iterations (ParseOptions::max_while_iterations)");
+                          " iterations (raise the limit with --max-loop)");
       frames_.back().pos = c.resume_pos;
       if (parse_directive_float() != 0) return;
       const Token start{Token::Kind::directive, "while", 0, c.where};
@@ -320,7 +320,7 @@ void Parser::directive_end(const Token& d) {
     case Cond::Kind::for_: {
       if (++c.iterations >= options_.max_while_iterations)
         fail(c.where, "#for loop ran more than " + std::to_string(options_.max_while_iterations) +
-                          " iterations (ParseOptions::max_while_iterations)");
+                          " iterations (raise the limit with --max-loop)");
       const ForLoop& loop = for_loops_.back();
       // The body may change the counter; POV-Ray steps from its current value.
       const Value* counter = lookup(loop.variable);
