@@ -1,6 +1,8 @@
 // Expressions: floats, 2-5 component vectors and colours with POV-Ray's promotion rules, strings, and the
 // built-in constants and functions (POV-Ray 3.7 reference, "Float Expressions", "Vector Expressions",
 // "Color Expressions", "String Expressions").
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 
@@ -81,6 +83,15 @@ double Parser::parse_float() {
   const Numeric n = parse_argument_numeric();
   if (n.size != 1) fail(where, "expected a float, found a " + std::string(n.color ? "color" : "vector"));
   return n.x();
+}
+
+int Parser::parse_int(const char* what, int lo, int hi) {
+  const scene::SourceLocation where = peek().where;
+  const double value = std::trunc(parse_float());
+  if (!(value >= lo && value <= hi))
+    fail(where, std::string(what) + " must be a whole number from " + std::to_string(lo) + " to " +
+                    std::to_string(hi) + ", found " + fmt::format("{:g}", value));
+  return static_cast<int>(value);
 }
 
 math::Vec3 Parser::parse_vector() {
@@ -697,6 +708,9 @@ std::string Parser::parse_string() {
   if (f == "concat") {
     for (;;) {
       result += parse_string();
+      if (static_cast<long long>(result.size()) > options_.max_string_length)
+        fail(t.where, "concat makes a string longer than " + std::to_string(options_.max_string_length) +
+                          " characters (ParseOptions::max_string_length)");
       if (accept(")")) break;
       expect(",", "concat");
     }
@@ -705,9 +719,9 @@ std::string Parser::parse_string() {
   if (f == "str") {
     const double value = parse_float();
     expect(",", "str");
-    const int width = static_cast<int>(parse_float());
+    const int width = parse_int("str width");
     expect(",", "str");
-    const int precision = static_cast<int>(parse_float());
+    const int precision = parse_int("str precision");
     expect(")", "str");
     // POV-Ray: a negative precision means the default (6); a width of 0 pads nothing.
     char buffer[128];
@@ -717,19 +731,19 @@ std::string Parser::parse_string() {
     return buffer;
   }
   if (f == "chr") {
-    const double c = parse_float();
+    const int c = parse_int("chr code", 0, 255);
     expect(")", "chr");
-    return std::string(1, static_cast<char>(static_cast<int>(c)));
+    return std::string(1, static_cast<char>(c));
   }
   if (f == "substr") {
     const std::string s = parse_string();
     expect(",", "substr");
     const scene::SourceLocation where = peek().where;
-    const int start = static_cast<int>(parse_float());
+    const int start = parse_int("substr start");
     expect(",", "substr");
-    const int count = static_cast<int>(parse_float());
+    const int count = parse_int("substr length");
     expect(")", "substr");
-    if (start < 1 || count < 0 || static_cast<size_t>(start - 1 + count) > s.size())
+    if (start < 1 || count < 0 || static_cast<size_t>(start - 1) + static_cast<size_t>(count) > s.size())
       fail(where, "substr range outside the string");
     return s.substr(static_cast<size_t>(start - 1), static_cast<size_t>(count));
   }

@@ -4,6 +4,7 @@
 // The member functions are spread over files by concern: token_source.cpp (token stack, directives),
 // expressions.cpp (floats, vectors, colours, strings), materials.cpp, objects.cpp, scene_items.cpp.
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -88,6 +89,8 @@ class Parser {
   /// Skips a `{ ... }` block whose `{` is next.
   void skip_block(const std::string& what);
   void check_frame_end();
+  /// Counts one more token read or skipped against ParseOptions::max_tokens.
+  void count_token(const Token& t);
 
   // ---- arrays (arrays.cpp) ----
   /// `array[d1][d2]... [{ items }]` after `array`.
@@ -130,6 +133,10 @@ class Parser {
   /// Parse_Float/Parse_Vector read it, so `box { <0,0,0><1,1,1> }` is two vectors, not a comparison.
   /// Comparisons, `&`, `|` and `?:` are read inside parentheses, vector components and arguments.
   double parse_float();
+  /// A float used as a count or index, truncated as POV-Ray's (int) casts do; outside [lo, hi] (or NaN)
+  /// it is an error, never an out-of-range conversion.
+  int parse_int(const char* what, int lo = std::numeric_limits<int>::min(),
+                int hi = std::numeric_limits<int>::max());
   /// A directive's value (`#if`, `#while`, `#switch`...): a full expression.
   double parse_directive_float();
   Numeric parse_argument_numeric();
@@ -205,6 +212,8 @@ class Parser {
   bool parse_object_modifier(ParsedObject& object);
   /// clipped_by { ... } / bounded_by { ... } after its keyword.
   void parse_clip_block(ParsedObject& object, const Token& keyword);
+  /// Adds `added`'s nodes to `nodes`, failing past ParseOptions::max_objects.
+  void count_objects(long long& nodes, const ParsedObject& added, const scene::SourceLocation& where);
   void attach_pigment(ParsedObject& object, std::shared_ptr<const material::Pigment> pigment);
 
   // ---- scene items (scene_items.cpp) ----
@@ -228,6 +237,7 @@ class Parser {
   std::vector<math::Pcg32> random_streams_;
   std::vector<std::map<std::string, Value>> scopes_;
   int macro_depth_ = 0;
+  long long tokens_read_ = 0;
   /// Depth of recursive descent (expressions, objects, pigments, textures): hostile input such as 100000
   /// opening parentheses or 5000 nested unions gives a ParseError instead of a stack overflow.
   int nesting_ = 0;

@@ -88,7 +88,14 @@ Token Parser::raw_next() {
   const Token t = raw_peek();
   Frame& f = frames_.back();
   if (t.kind != Token::Kind::end) ++f.pos;
+  count_token(t);
   return t;
+}
+
+void Parser::count_token(const Token& t) {
+  if (++tokens_read_ > options_.max_tokens)
+    fail(t.where, "the scene read more than " + std::to_string(options_.max_tokens) +
+                      " tokens (ParseOptions::max_tokens): a runaway loop or macro recursion?");
 }
 
 const Token& Parser::peek() {
@@ -150,6 +157,7 @@ Token Parser::skip_to(std::initializer_list<const char*> targets, const Token& o
     const Token& t = (*f.tokens)[f.pos];
     if (t.kind == Token::Kind::end) fail(opener.where, "#" + opener.text + " has no matching #end");
     ++frames_.back().pos;
+    count_token(t);
     if (t.kind != Token::Kind::directive) continue;
     if (depth == 0) {
       for (const char* target : targets)
@@ -433,9 +441,15 @@ void Parser::directive_macro(const Token& d) {
       const Token p = raw_next();
       if (p.kind != Token::Kind::identifier) fail(p.where, "expected a parameter name");
       macro->parameters.push_back(p.text);
-      const Token sep = raw_next();
-      if (sep.is_symbol(")")) break;
-      if (!sep.is_symbol(",")) fail(sep.where, "expected ',' or ')' in the macro's parameter list");
+      // Like POV-Ray, commas between parameters are optional and one may stand before the ')' (both occur
+      // in shapes3.inc).
+      if (raw_peek().is_symbol(",")) raw_next();
+      if (raw_peek().is_symbol(")")) {
+        raw_next();
+        break;
+      }
+      if (raw_peek().kind != Token::Kind::identifier)
+        fail(raw_peek().where, "expected ',' or ')' in the macro's parameter list");
     }
   } else {
     raw_next();
