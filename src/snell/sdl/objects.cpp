@@ -408,12 +408,13 @@ ParsedObject Parser::parse_light(const Token& keyword) {
       light.fade_power = parse_float();
     } else if (w == "area_light") {
       light.area = true;
+      // The commas are optional, as everywhere POV-Ray reads arguments (bsp/Tango.pov omits them).
       light.axis1 = parse_vector();
-      expect(",", "area_light");
+      accept(",");
       light.axis2 = parse_vector();
-      expect(",", "area_light");
+      accept(",");
       light.size1 = parse_int("area_light size");
-      expect(",", "area_light");
+      accept(",");
       light.size2 = parse_int("area_light size");
       if (light.size1 < 1 || light.size2 < 1) fail(t.where, "area_light sizes must be at least 1");
     } else if (w == "adaptive") {
