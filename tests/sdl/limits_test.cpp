@@ -77,5 +77,18 @@ TEST(SdlLimits, ObjectTreesThatDoubleThemselvesAreBounded) {
   EXPECT_NE(error_with(clips, o).find("ParseOptions::max_objects"), std::string::npos);
 }
 
+TEST(SdlLimits, DirectivesNestedThroughAnUnfinishedDeclareAreBounded) {
+  // Found by libFuzzer (fuzz/corpus/regressions/while-around-unfinished-declare.pov): each iteration starts
+  // a #declare whose value is still being read when the #while's #end loops back, so the directives nest
+  // one level deeper per iteration until the stack overflowed.
+  const std::string e = error_with(
+      "#declare N = 2;\n#while (N < 100)\n  #declare N = #switch\n  #if (mod(N, 3) = 0) box { N, N + 1 } "
+      "#end\n"
+      "#end\n",
+      quiet());
+  EXPECT_NE(e.find("limits.pov:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("nested more than 256 levels deep"), std::string::npos) << e;
+}
+
 }  // namespace
 }  // namespace snell::sdl

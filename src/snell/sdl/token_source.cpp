@@ -185,6 +185,9 @@ void Parser::skip_block(const std::string& what) {
 }
 
 void Parser::handle_directive(const Token& d) {
+  // A directive met while a directive's value is read runs inside it: `#while` around an unfinished
+  // `#declare N = #switch ...` nests one level deeper per iteration (a fuzzer find).
+  const NestingGuard guard(*this, d.where);
   const std::string& n = d.text;
   if (n == "declare") return directive_declare(d, false);
   if (n == "local") return directive_declare(d, true);
