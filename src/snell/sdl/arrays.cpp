@@ -1,5 +1,7 @@
 // Arrays (POV-Ray 3.7 reference, "Array Identifiers"): `array[N]...` with an optional initializer,
 // element reads anywhere an identifier may stand, and `#declare A[i] = value`.
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "snell/sdl/parser.hpp"
@@ -8,9 +10,10 @@ namespace snell::sdl {
 
 namespace {
 
-size_t element_count(const std::vector<int>& sizes) {
-  size_t n = 1;
-  for (int s : sizes) n *= static_cast<size_t>(s);
+/// The number of elements, saturated at `limit + 1` so that no product of sizes can overflow.
+long long element_count(const std::vector<int>& sizes, long long limit) {
+  long long n = 1;
+  for (int s : sizes) n = n > limit / s ? limit + 1 : n * s;
   return n;
 }
 
@@ -19,21 +22,26 @@ size_t element_count(const std::vector<int>& sizes) {
 std::shared_ptr<Array> Parser::parse_array() {
   auto array = std::make_shared<Array>();
   const scene::SourceLocation where = peek().where;
+  const auto too_large = [this](const scene::SourceLocation& at) {
+    fail(at, "array larger than " + std::to_string(options_.max_array_elements) +
+                 " elements (ParseOptions::max_array_elements)");
+  };
   // peek_after_value: a directive after the last size must run only once the array is declared.
   while (peek_after_value().is_symbol("[")) {
     const Token open = raw_next();
+    // POV-Ray 3.7 allows at most 5 dimensions (parser.h, POV_ARRAY::kMaxDimensions).
+    if (array->sizes.size() == 5) fail(open.where, "an array has at most 5 dimensions");
     const double size = parse_float();
     expect("]", "array size");
-    if (!(size >= 1) || size != std::floor(size) || size > 1e8)
+    if (!(size >= 1) || size != std::floor(size))
       fail(open.where, "an array size must be a whole number of at least 1");
+    if (size > static_cast<double>(options_.max_array_elements)) too_large(open.where);
     array->sizes.push_back(static_cast<int>(size));
   }
   if (array->sizes.empty()) fail(where, "expected '[size]' after array");
-  // Bounded memory: at most 1 GiB of element slots, however large the sizes a scene asks for.
-  constexpr size_t kMaxElements = (size_t{1} << 30) / sizeof(std::optional<Value>);
-  if (element_count(array->sizes) > kMaxElements)
-    fail(where, "array too large (more than " + std::to_string(kMaxElements) + " elements)");
-  array->items.resize(element_count(array->sizes));
+  const long long elements = element_count(array->sizes, options_.max_array_elements);
+  if (elements > options_.max_array_elements) too_large(where);
+  array->items.resize(static_cast<size_t>(elements));
   if (!peek_after_value().is_symbol("{")) return array;
 
   // `{ a, b, ... }`, nested once per dimension; every element must be given.
@@ -76,9 +84,9 @@ size_t Parser::parse_array_index(const Array& array, const Token& name) {
     raw_next();
     const double i = std::floor(parse_float());  // POV-Ray truncates fractional indices
     expect("]", "array index");
-    if (i < 0 || i >= array.sizes[dim])
-      fail(open.where, "index " + std::to_string(static_cast<long long>(i)) + " is out of range for '" +
-                           name.text + "' (size " + std::to_string(array.sizes[dim]) + ")");
+    if (!(i >= 0 && i < array.sizes[dim]))
+      fail(open.where, "index " + fmt::format("{:g}", i) + " is out of range for '" + name.text + "' (size " +
+                           std::to_string(array.sizes[dim]) + ")");
     flat = flat * static_cast<size_t>(array.sizes[dim]) + static_cast<size_t>(i);
   }
   return flat;
@@ -131,9 +139,8 @@ Numeric Parser::parse_array_function(const Token& name) {
   const double dim = std::floor(parse_float());
   expect(")", f.c_str());
   // POV-Ray numbers dimensions from 1; outside them the size is 0 (3.7 reference, "dimension_size").
-  if (dim < 1 || dim > static_cast<double>(held->sizes.size())) {
-    warn(where, "dimension_size: '" + array_name.text + "' has no dimension " +
-                    std::to_string(static_cast<long long>(dim)));
+  if (!(dim >= 1 && dim <= static_cast<double>(held->sizes.size()))) {
+    warn(where, "dimension_size: '" + array_name.text + "' has no dimension " + fmt::format("{:g}", dim));
     return Numeric::of(0);
   }
   return Numeric::of(held->sizes[static_cast<size_t>(dim) - 1]);

@@ -1,6 +1,8 @@
 // Expressions: floats, 2-5 component vectors and colours with POV-Ray's promotion rules, strings, and the
 // built-in constants and functions (POV-Ray 3.7 reference, "Float Expressions", "Vector Expressions",
 // "Color Expressions", "String Expressions").
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -80,6 +82,15 @@ double Parser::parse_float() {
   const Numeric n = parse_argument_numeric();
   if (n.size != 1) fail(where, "expected a float, found a " + std::string(n.color ? "color" : "vector"));
   return n.x();
+}
+
+int Parser::parse_int(const char* what, int lo, int hi) {
+  const scene::SourceLocation where = peek().where;
+  const double value = std::trunc(parse_float());
+  if (!(value >= lo && value <= hi))
+    fail(where, std::string(what) + " must be a whole number from " + std::to_string(lo) + " to " +
+                    std::to_string(hi) + ", found " + fmt::format("{:g}", value));
+  return static_cast<int>(value);
 }
 
 math::Vec3 Parser::parse_vector() {

@@ -304,6 +304,8 @@ std::shared_ptr<const function::Function> Parser::parse_function_block() {
     if (number.kind != Token::Kind::number) fail(number.where, "internal() needs a function number");
     expect(")", "internal()");
     expect("}", "function");
+    if (!(number.number >= 0 && number.number < 1000))
+      fail(number.where, "no internal function with this number");
     try {
       return function::internal_function(static_cast<int>(number.number));
     } catch (const function::FunctionError& e) {

@@ -202,8 +202,10 @@ ParsedObject Parser::parse_union(const Token& keyword) {
   ParsedObject o;
   o.where = keyword.where;
   expect("{", keyword.text.c_str());
+  long long nodes = 1;
   for (;;) {
     if (auto child = parse_object_if_any()) {
+      count_objects(nodes, *child, keyword.where);
       o.children.push_back(std::move(*child));
       continue;
     }
@@ -425,16 +427,17 @@ ParsedObject Parser::parse_light(const Token& keyword) {
       light.fade_power = parse_float();
     } else if (w == "area_light") {
       light.area = true;
+      // The commas are optional, as everywhere POV-Ray reads arguments (bsp/Tango.pov omits them).
       light.axis1 = parse_vector();
-      expect(",", "area_light");
+      accept(",");
       light.axis2 = parse_vector();
-      expect(",", "area_light");
-      light.size1 = static_cast<int>(parse_float());
-      expect(",", "area_light");
-      light.size2 = static_cast<int>(parse_float());
+      accept(",");
+      light.size1 = parse_int("area_light size");
+      accept(",");
+      light.size2 = parse_int("area_light size");
       if (light.size1 < 1 || light.size2 < 1) fail(t.where, "area_light sizes must be at least 1");
     } else if (w == "adaptive") {
-      light.adaptive = static_cast<int>(parse_float());
+      light.adaptive = parse_int("adaptive");
     } else if (w == "jitter") {
       light.jitter = true;
     } else if (w == "circular") {
@@ -488,7 +491,9 @@ void Parser::parse_clip_block(ParsedObject& o, const Token& keyword) {
   // The clipping objects are written in the object's current space; keep them in its own space so that
   // later transforms of the object move them too.
   const math::Transform to_own = o.transform.inverse();
+  long long nodes = count_nodes(o, options_.max_objects);
   while (auto child = parse_object_if_any()) {
+    count_objects(nodes, *child, keyword.where);
     child->apply(to_own);
     objects.push_back(std::move(*child));
   }
@@ -496,6 +501,13 @@ void Parser::parse_clip_block(ParsedObject& o, const Token& keyword) {
   if (objects.empty()) fail(keyword.where, keyword.text + " needs at least one object");
   auto& list = clip ? o.clipped_by : o.bounded_by;
   for (auto& obj : objects) list.push_back(std::move(obj));
+}
+
+void Parser::count_objects(long long& nodes, const ParsedObject& added, const scene::SourceLocation& where) {
+  nodes += count_nodes(added, options_.max_objects);
+  if (nodes > options_.max_objects)
+    fail(where, "this object holds more than " + std::to_string(options_.max_objects) +
+                    " objects (ParseOptions::max_objects)");
 }
 
 void Parser::attach_pigment(ParsedObject& o, std::shared_ptr<const material::Pigment> pigment) {

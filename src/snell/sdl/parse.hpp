@@ -43,6 +43,16 @@ struct ParseOptions {
   long max_while_iterations = 10'000'000;
   int max_include_depth = 64;
   int max_macro_depth = 256;
+  /// Tokens read or skipped in all (loops and macros replay tokens): bounds the work of any scene, such
+  /// as a macro that calls itself twice per level, which no depth or iteration limit catches.
+  long long max_tokens = 1'000'000'000;
+  /// Elements of one array, and characters of one string value.
+  long long max_array_elements = 10'000'000;
+  /// The longest string a scene may build (concat, str...); longer is an error, not unbounded memory.
+  long long max_string_length = 1 << 20;
+  /// Objects (shapes, lights and CSG nodes) in one object tree: `union { object { A } object { A } }`
+  /// declared as A again doubles each time.
+  long long max_objects = 20'000'000;
 };
 
 /// A scene error. `what()` is the whole message as printed: `file:line:col: error: message`, the source

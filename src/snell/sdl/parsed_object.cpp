@@ -9,6 +9,16 @@ void ParsedObject::apply(const math::Transform& t) {
   if (texture) texture = texture->transformed(t);
 }
 
+long long count_nodes(const ParsedObject& object, long long limit) {
+  long long n = 1;
+  for (const auto* list : {&object.children, &object.clipped_by, &object.bounded_by})
+    for (const ParsedObject& child : *list) {
+      if (n > limit) return n;
+      n += count_nodes(child, limit - n);
+    }
+  return n;
+}
+
 namespace {
 
 using ObjectPtr = std::shared_ptr<const scene::Object>;

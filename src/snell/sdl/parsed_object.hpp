@@ -38,6 +38,10 @@ struct ParsedObject {
   void apply(const math::Transform& t);
 };
 
+/// Nodes in the object's tree (itself, children, clipping and bounding objects); counting stops once the
+/// total passes `limit`, so a tree that doubled itself many times is not walked to its end.
+long long count_nodes(const ParsedObject& object, long long limit);
+
 /// Flattens `object` into scene objects and lights: children get composed transforms and inherit the
 /// union's texture, interior and flags where they have none of their own.
 void flatten(const ParsedObject& object, std::vector<std::shared_ptr<const scene::Object>>& objects,

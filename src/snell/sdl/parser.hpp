@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -97,6 +98,8 @@ class Parser {
   /// Skips a `{ ... }` block whose `{` is next.
   void skip_block(const std::string& what);
   void check_frame_end();
+  /// Counts one more token read or skipped against ParseOptions::max_tokens.
+  void count_token(const Token& t);
 
   // ---- user files (file_io.cpp) ----
   /// A file opened by `#fopen`: written through `output`, or read from its lexed tokens.
@@ -162,6 +165,10 @@ class Parser {
   /// Parse_Float/Parse_Vector read it, so `box { <0,0,0><1,1,1> }` is two vectors, not a comparison.
   /// Comparisons, `&`, `|` and `?:` are read inside parentheses, vector components and arguments.
   double parse_float();
+  /// A float used as a count or index, truncated as POV-Ray's (int) casts do; outside [lo, hi] (or NaN)
+  /// it is an error, never an out-of-range conversion.
+  int parse_int(const char* what, int lo = std::numeric_limits<int>::min(),
+                int hi = std::numeric_limits<int>::max());
   /// A directive's value (`#if`, `#while`, `#switch`...): a full expression.
   double parse_directive_float();
   Numeric parse_argument_numeric();
@@ -270,6 +277,8 @@ class Parser {
   bool parse_object_modifier(ParsedObject& object);
   /// clipped_by { ... } / bounded_by { ... } after its keyword.
   void parse_clip_block(ParsedObject& object, const Token& keyword);
+  /// Adds `added`'s nodes to `nodes`, failing past ParseOptions::max_objects.
+  void count_objects(long long& nodes, const ParsedObject& added, const scene::SourceLocation& where);
   void attach_pigment(ParsedObject& object, std::shared_ptr<const material::Pigment> pigment);
 
   // ---- scene items (scene_items.cpp) ----
@@ -296,6 +305,7 @@ class Parser {
   size_t bytes_written_ = 0;
   static constexpr size_t kMaxBytesWritten = size_t{256} << 20;
   int macro_depth_ = 0;
+  long long tokens_read_ = 0;
   /// Depth of recursive descent (expressions, objects, pigments, textures): hostile input such as 100000
   /// opening parentheses or 5000 nested unions gives a ParseError instead of a stack overflow.
   int nesting_ = 0;

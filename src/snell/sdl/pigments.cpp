@@ -315,9 +315,8 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     b.turbulence_params().amount = n.size == 1 ? math::Vec3{n.x(), n.x(), n.x()} : n.vec3();
   } else if (w == "octaves") {
     raw_next();
-    const double octaves = parse_float();
     // POV-Ray clips octaves to 1..10.
-    b.turbulence_params().octaves = static_cast<int>(std::clamp(octaves, 1.0, 10.0));
+    b.turbulence_params().octaves = std::clamp(parse_int("octaves"), 1, 10);
   } else if (w == "omega") {
     raw_next();
     b.turbulence_params().omega = parse_float();
@@ -356,7 +355,7 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
       }
       raw_next();
       if (m.is_word("octaves"))
-        params.octaves = static_cast<int>(std::clamp(parse_float(), 1.0, 10.0));
+        params.octaves = std::clamp(parse_int("octaves"), 1, 10);
       else if (m.is_word("omega"))
         params.omega = parse_float();
       else if (m.is_word("lambda"))

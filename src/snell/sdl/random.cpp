@@ -18,12 +18,13 @@ Numeric Parser::parse_random_function(const Token& name) {
   if (f == "seed") {
     // POV-Ray truncates the seed to an integer; two streams from the same seed give
     // the same sequence, each advancing on its own.
+    if (!std::isfinite(arg)) fail(where, "seed needs a finite number");
     const auto n = static_cast<int64_t>(std::trunc(std::fmod(arg, 9.2e18)));
     random_streams_.emplace_back(math::mix_seed(static_cast<uint64_t>(n)));
     return Numeric::of(static_cast<double>(random_streams_.size() - 1));
   }
   const double index = std::floor(arg);
-  if (index < 0 || index >= static_cast<double>(random_streams_.size()))
+  if (!(index >= 0 && index < static_cast<double>(random_streams_.size())))
     fail(where, "rand: " + std::to_string(arg) + " is not a stream made by seed()");
   return Numeric::of(random_streams_[static_cast<size_t>(index)].next_double());
 }

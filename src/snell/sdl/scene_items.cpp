@@ -134,7 +134,7 @@ void Parser::parse_global_settings() {
         warn(t.where, "assumed_gamma given again; the first one stays in effect");
       assumed_gamma_seen_ = true;
     } else if (w == "max_trace_level") {
-      scene_.settings.max_trace_level = static_cast<int>(parse_float());
+      scene_.settings.max_trace_level = parse_int("max_trace_level");
     } else if (w == "adc_bailout") {
       scene_.settings.adc_bailout = parse_float();
     } else if (w == "ambient_light") {
@@ -256,17 +256,17 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
       cam.aperture = parse_float();
     else if (w == "blur_samples") {
       // `blur_samples N` or `blur_samples MIN, MAX` (POV-Ray 3.7 reference "Focal Blur").
-      const double first = parse_float();
+      const int first = parse_int("blur_samples");
       if (first <= 0) fail(t.where, "the number of focal blur samples must be positive");
       accept(",");
-      const double second = starts_numeric() ? parse_float() : 0;
+      const int second = starts_numeric() ? parse_int("blur_samples") : 0;
       if (second == 0) {
-        cam.blur_samples = static_cast<int>(first);
+        cam.blur_samples = first;
         cam.blur_samples_min = 0;
       } else {
         if (first > second) fail(t.where, "focal blur samples minimum must not be larger than maximum");
-        cam.blur_samples_min = static_cast<int>(first);
-        cam.blur_samples = static_cast<int>(second);
+        cam.blur_samples_min = first;
+        cam.blur_samples = second;
       }
       if (cam.blur_samples > 4096) fail(t.where, "too many focal blur samples (at most 4096)");
     } else if (w == "focal_point")

@@ -10,7 +10,5 @@ bool is_string_function(const std::string& name);
 /// Functions of strings whose value is a number: strlen, strcmp, val, asc, file_exists.
 bool is_numeric_string_function(const std::string& name);
 
-/// The longest string a scene may build (concat, substr...); longer is an error, not unbounded memory.
-inline constexpr size_t kMaxStringLength = 1 << 20;
 
 }  // namespace snell::sdl

@@ -84,8 +84,9 @@ std::string Parser::parse_string() {
   if (!is_string_function(f)) fail(t.where, "expected a string, found '" + f + "'");
   expect("(", f.c_str());
   std::string result = parse_string_function(t);
-  if (result.size() > kMaxStringLength)
-    fail(t.where, "string longer than " + std::to_string(kMaxStringLength) + " characters");
+  if (static_cast<long long>(result.size()) > options_.max_string_length)
+    fail(t.where, "string longer than " + std::to_string(options_.max_string_length) +
+                      " characters (ParseOptions::max_string_length)");
   return result;
 }
 
@@ -95,7 +96,7 @@ std::string Parser::parse_string_function(const Token& name) {
   if (f == "concat") {
     for (;;) {
       result += parse_string();
-      if (result.size() > kMaxStringLength) return result;
+      if (static_cast<long long>(result.size()) > options_.max_string_length) return result;
       if (accept(")")) break;
       expect(",", "concat");
     }

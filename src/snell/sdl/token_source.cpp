@@ -89,7 +89,14 @@ Token Parser::raw_next() {
   const Token t = raw_peek();
   Frame& f = frames_.back();
   if (t.kind != Token::Kind::end) ++f.pos;
+  count_token(t);
   return t;
+}
+
+void Parser::count_token(const Token& t) {
+  if (++tokens_read_ > options_.max_tokens)
+    fail(t.where, "the scene read more than " + std::to_string(options_.max_tokens) +
+                      " tokens (ParseOptions::max_tokens): a runaway loop or macro recursion?");
 }
 
 const Token& Parser::peek() {
@@ -151,6 +158,7 @@ Token Parser::skip_to(std::initializer_list<const char*> targets, const Token& o
     const Token& t = (*f.tokens)[f.pos];
     if (t.kind == Token::Kind::end) fail(opener.where, "#" + opener.text + " has no matching #end");
     ++frames_.back().pos;
+    count_token(t);
     if (t.kind != Token::Kind::directive) continue;
     if (depth == 0) {
       for (const char* target : targets)
@@ -178,6 +186,9 @@ void Parser::skip_block(const std::string& what) {
 }
 
 void Parser::handle_directive(const Token& d) {
+  // A directive met while a directive's value is read runs inside it: `#while` around an unfinished
+  // `#declare N = #switch ...` nests one level deeper per iteration (a fuzzer find).
+  const NestingGuard guard(*this, d.where);
   const std::string& n = d.text;
   if (n == "declare") return directive_declare(d, false);
   if (n == "local") return directive_declare(d, true);
