@@ -229,6 +229,10 @@ Value Parser::parse_rvalue() {
       raw_next();
       return Value{parse_pigment_map()};
     }
+    if (word.text == "normal") {
+      raw_next();
+      return Value{parse_normal_block()};
+    }
     if (word.text == "finish") {
       raw_next();
       return Value{parse_finish_block(material::Finish{})};

@@ -50,13 +50,15 @@ struct Value {
                std::shared_ptr<const material::Interior>, ParsedObject, std::shared_ptr<const Macro>,
                scene::CameraSpec, std::shared_ptr<const texture::ColorMap>,
                std::shared_ptr<const texture::PigmentMap>, std::shared_ptr<const function::Function>,
-               std::shared_ptr<const material::Material>, std::shared_ptr<Array>>
+               std::shared_ptr<const material::Material>, std::shared_ptr<Array>,
+               std::shared_ptr<const material::Normal>>
       data;
 
   const char* type_name() const {
     static const char* names[] = {"number",    "string",      "transform", "pigment", "texture",
                                   "finish",    "interior",    "object",    "macro",   "camera",
-                                  "color_map", "pigment_map", "function", "material", "array"};
+                                  "color_map", "pigment_map", "function", "material", "array",
+                                  "normal"};
     if (const auto* n = std::get_if<Numeric>(&data))
       return n->color ? "color" : (n->size == 1 ? "float" : "vector");
     return names[data.index()];

@@ -16,6 +16,16 @@ class ValuePattern {
   virtual double value(const Vec3& p) const = 0;
 };
 
+/// A pattern with its own way of bending a surface normal (POV-Ray normal.cpp: bumps, dents, wrinkles,
+/// ripples, waves), used by `normal { pattern bump_size }` instead of the pattern's finite-difference
+/// gradient.
+class BumpSource {
+ public:
+  virtual ~BumpSource() = default;
+  /// The vector added to the unit normal (in pattern space) per unit of bump_size.
+  virtual Vec3 bump(const Vec3& p) const = 0;
+};
+
 class BlockPattern {
  public:
   virtual ~BlockPattern() = default;

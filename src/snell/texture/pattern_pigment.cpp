@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "snell/texture/map_bracket.hpp"
+
 namespace snell::texture {
 
 PigmentMap::PigmentMap(std::vector<Entry> entries) : entries_(std::move(entries)) {
@@ -14,15 +16,9 @@ PigmentMap::PigmentMap(std::vector<Entry> entries) : entries_(std::move(entries)
 }
 
 material::Rgbft PigmentMap::at(double value, const material::PatternPoint& point) const {
-  if (value <= entries_.front().first) return entries_.front().second->at(point);
-  if (value >= entries_.back().first) return entries_.back().second->at(point);
-  const auto upper = std::upper_bound(entries_.begin(), entries_.end(), value,
-                                      [](double v, const Entry& e) { return v < e.first; });
-  const auto lower = upper - 1;
-  const double span = upper->first - lower->first;
-  if (span <= 0) return upper->second->at(point);
-  const double t = (value - lower->first) / span;
-  return material::lerp(lower->second->at(point), upper->second->at(point), t);
+  const MapBracket b = map_bracket(entries_, value);
+  if (b.lower == b.upper) return entries_[b.lower].second->at(point);
+  return material::lerp(entries_[b.lower].second->at(point), entries_[b.upper].second->at(point), b.weight);
 }
 
 PatternPigment::PatternPigment(PatternSpec spec) : spec_(std::move(spec)) {
