@@ -95,3 +95,11 @@ TEST(SdlPatterns, MandelIsOneInsideTheSetAndLowFarOutside) {
   EXPECT_NEAR(p.at(inside).rgb.r, 1.0, 1e-4);   // through the default grey ramp (folded at 1.00001)
   EXPECT_NEAR(p.at(outside).rgb.r, 0.0, 1e-9);  // escapes on the first iteration
 }
+
+TEST(SdlPatterns, UvMappingLooksUpThePatternAtTheSurfaceUv) {
+  const scene::Scene s = sdl::test::parse("sphere { 0, 1 pigment { uv_mapping gradient x } }");
+  const material::Texture& t = texture_of(s);
+  // The point in space is ignored; u = 0.25 gives a quarter of the default grey ramp.
+  EXPECT_NEAR(t.pigment_at({0.9, 0.1, 0}, {1, 0, 0}, {0.25, 0.6}).rgb.r, 0.25, 1e-9);
+  EXPECT_NEAR(t.pigment_at({0.1, 0.9, 0}, {0, 1, 0}, {0.75, 0.1}).rgb.r, 0.75, 1e-9);
+}

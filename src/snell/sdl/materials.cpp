@@ -255,6 +255,7 @@ std::shared_ptr<const material::Texture> Parser::parse_texture_body(const char* 
   auto texture = std::make_shared<material::Texture>(*default_texture_);
   texture->pigment = nullptr;
   TexturePatternBuilder patterned;
+  bool uv_mapping = false;
   for (;;) {
     const Token t = peek();
     if (t.is_symbol(closer)) {
@@ -275,7 +276,9 @@ std::shared_ptr<const material::Texture> Parser::parse_texture_body(const char* 
     }
     if (parse_texture_pattern(patterned)) continue;
     raw_next();
-    if (w == "texture" && std::string(closer) == "]") {
+    if (w == "uv_mapping") {
+      uv_mapping = true;  // applies to the texture's pigment (below)
+    } else if (w == "texture" && std::string(closer) == "]") {
       *texture = *parse_texture_block();  // `[v texture {..}]` in a texture_map
     } else if (w == "pigment") {
       texture->pigment = parse_pigment_block(texture->pigment);
@@ -289,6 +292,7 @@ std::shared_ptr<const material::Texture> Parser::parse_texture_body(const char* 
   }
   if (patterned.active) finish_texture_pattern(patterned, *texture, where);
   if (!texture->pigment) texture->pigment = default_texture_->pigment;
+  if (uv_mapping) texture->pigment = std::make_shared<texture::UvMappedPigment>(texture->pigment);
   return texture;
 }
 

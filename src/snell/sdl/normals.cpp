@@ -31,6 +31,7 @@ struct Parser::NormalBuilder {
     pattern.spec.value_pattern = s.pattern;
     pattern.spec.wave = s.wave;
     pattern.spec.warps = s.warps;
+    pattern.uv_mapping = s.uv_mapping;
     bump_size = s.bump_size;
     accuracy = s.accuracy;
     slope_map = s.slope_map;
@@ -49,6 +50,7 @@ struct Parser::NormalBuilder {
     spec.accuracy = accuracy;
     spec.slope_map = slope_map;
     spec.normal_map = normal_map;
+    spec.uv_mapping = pattern.uv_mapping;
     return std::make_shared<texture::PatternNormal>(std::move(spec));
   }
 };
@@ -87,6 +89,7 @@ void Parser::parse_normal_body(NormalBuilder& b, const char* closer) {
     if (w == "checker" || w == "hexagon" || w == "brick")
       fail(t.where, "block pattern '" + w + "' in a normal is not supported yet");
     if (parse_pattern_type(b.pattern)) {
+      accept(",");  // `gradient x, 0.5`
       if (starts_numeric()) b.bump_size = parse_float();
       continue;
     }

@@ -34,6 +34,8 @@ struct Parser::PigmentBuilder {
   texture::CrackleParams crackle;
   double control0 = 1, control1 = 1;
   double arms = 1;
+  /// `uv_mapping`: kept through start_pattern (it may come before the pattern).
+  bool uv_mapping = false;
   texture::FractalShading fractal;
   double julia_real = 0, julia_imaginary = 0;
   bool brick = false;
@@ -42,7 +44,9 @@ struct Parser::PigmentBuilder {
 
   /// Starts from an existing pigment: a patterned one can be modified further.
   void start_from(const PigmentPtr& pigment) {
+    const bool uv = uv_mapping;
     *this = PigmentBuilder{};
+    uv_mapping = uv;
     const auto* pattern = dynamic_cast<const texture::PatternPigment*>(pigment.get());
     if (!pattern) {
       plain = pigment;
@@ -66,8 +70,10 @@ struct Parser::PigmentBuilder {
 
   /// A pattern keyword replaces whatever colour or pattern came before it in the block.
   void start_pattern() {
+    const bool uv = uv_mapping;
     *this = PigmentBuilder{};
     patterned = true;
+    uv_mapping = uv;
   }
 
   texture::TurbulenceParams& turbulence_params() {
@@ -123,8 +129,9 @@ struct Parser::PigmentBuilder {
   }
 
   PigmentPtr build() const {
-    if (!patterned) return plain;
-    return std::make_shared<texture::PatternPigment>(build_spec());
+    PigmentPtr pigment = patterned ? std::make_shared<texture::PatternPigment>(build_spec()) : plain;
+    if (uv_mapping && pigment) pigment = std::make_shared<texture::UvMappedPigment>(pigment);
+    return pigment;
   }
 };
 

@@ -351,6 +351,9 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
   } else if (w == "agate_turb") {
     raw_next();
     b.agate_turb = parse_float();
+  } else if (w == "uv_mapping") {
+    raw_next();
+    b.uv_mapping = true;
   } else if (w == "quick_color" || w == "quick_colour") {
     raw_next();
     parse_color();

@@ -61,6 +61,10 @@ PatternNormal::PatternNormal(NormalSpec spec) : spec_(std::move(spec)) {
     if (!e.second) throw std::invalid_argument("a normal_map entry has no normal");
 }
 
+Vec3 PatternNormal::pattern_point(const material::PatternPoint& point) const {
+  return spec_.uv_mapping ? Vec3{point.uv.u, point.uv.v, 0} : point.p;
+}
+
 Vec3 PatternNormal::bend(const Vec3& q) const {
   if (!spec_.slope_map) {
     if (const auto* own = dynamic_cast<const BumpSource*>(spec_.pattern.get()))
@@ -77,13 +81,13 @@ Vec3 PatternNormal::bend(const Vec3& q) const {
 
 Vec3 PatternNormal::perturb(const Vec3& normal, const material::PatternPoint& point) const {
   if (!spec_.normal_map.empty()) return perturb_by_map(normal, point);
-  const Vec3 q = spec_.warps.apply(point.p);
+  const Vec3 q = spec_.warps.apply(pattern_point(point));
   const Vec3 n = to_pattern_space(spec_.warps, normal);
   return from_pattern_space(spec_.warps, n + bend(q));
 }
 
 Vec3 PatternNormal::perturb_by_map(const Vec3& normal, const material::PatternPoint& point) const {
-  const double value = spec_.wave.apply(spec_.pattern->value(spec_.warps.apply(point.p)));
+  const double value = spec_.wave.apply(spec_.pattern->value(spec_.warps.apply(pattern_point(point))));
   const auto& map = spec_.normal_map;
   const MapBracket bracket = map_bracket(map, value);
   const Vec3 b = map[bracket.upper].second->perturb(normal, point);

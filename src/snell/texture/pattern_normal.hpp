@@ -48,6 +48,8 @@ struct NormalSpec {
   std::optional<SlopeMap> slope_map;
   /// `normal_map` entries, sorted by value; empty for none.
   std::vector<std::pair<double, NormalPtr>> normal_map;
+  /// `uv_mapping`: the pattern is looked up at the surface's (u, v, 0).
+  bool uv_mapping = false;
 };
 
 class PatternNormal final : public material::Normal {
@@ -58,6 +60,8 @@ class PatternNormal final : public material::Normal {
   const NormalSpec& spec() const { return spec_; }
 
  private:
+  /// Where the pattern is looked up before the warps: the point, or (u, v, 0) with uv_mapping.
+  Vec3 pattern_point(const material::PatternPoint& point) const;
   /// The bending vector in pattern space at pattern point q.
   Vec3 bend(const Vec3& q) const;
   Vec3 perturb_by_map(const Vec3& normal, const material::PatternPoint& point) const;

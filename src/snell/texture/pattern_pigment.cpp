@@ -49,6 +49,12 @@ material::Rgbft TransformedPigment::at(const material::PatternPoint& point) cons
   return inner_->at(moved);
 }
 
+material::Rgbft UvMappedPigment::at(const material::PatternPoint& point) const {
+  material::PatternPoint uv = point;
+  uv.p = Vec3{point.uv.u, point.uv.v, 0};
+  return inner_->at(uv);
+}
+
 PigmentPtr transform_pigment(const PigmentPtr& pigment, const math::Transform& transform) {
   if (!pigment || pigment->is_constant() || transform.is_identity()) return pigment;
   return std::make_shared<TransformedPigment>(pigment, transform);
