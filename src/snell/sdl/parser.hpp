@@ -234,7 +234,8 @@ class Parser {
   scene::CameraSpec parse_camera(const scene::CameraSpec& base);
   void parse_global_settings();
   void parse_background();
-  void parse_sky_sphere();
+  /// `{ ... }` after `sky_sphere` (also in `#declare S = sky_sphere {..}`).
+  scene::SkySphere parse_sky_sphere();
   scene::Scene finish_scene();
 
   ParseOptions options_;
