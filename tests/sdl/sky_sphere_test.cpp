@@ -43,7 +43,7 @@ TEST(SdlSkySphere, TransparentLayerShowsBackground) {
 
 TEST(SdlSkySphere, DeclaredSkySphereIsReusedAndModified) {
   // skies.inc declares its skies this way: `#declare S = sky_sphere {..}` then `sky_sphere { S }`.
-  const scene::Scene s = sdl::test::parse(R"(
+  const snell::scene::Scene s = snell::sdl::test::parse(R"(
     #declare S = sky_sphere { pigment { rgb <0.2, 0.4, 0.6> } }
     sky_sphere { S rotate y * 30 })");
   ASSERT_TRUE(s.sky_sphere.has_value());

@@ -32,6 +32,29 @@ bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
       fail(t.where, "'" + w + "' in a texture needs " + std::to_string(count) + " texture {} entries");
     return true;
   }
+  if (w == "tiles") {
+    // The old form of a checker of textures: `tiles { texture {A}.. } tile2 { texture {B}.. }`.
+    b = TexturePatternBuilder{};
+    b.active = true;
+    b.pattern.start_pattern();
+    b.pattern.spec.block_pattern = std::make_shared<texture::CheckerPattern>();
+    for (const char* keyword : {"tiles", "tile2"}) {
+      const Token k = peek();
+      if (!k.is_word(keyword))
+        fail(k.where, std::string("expected '") + keyword + "', found '" + k.text + "'");
+      raw_next();
+      expect("{", keyword);
+      std::shared_ptr<const material::Texture> tile;
+      while (peek().is_word("texture")) {
+        raw_next();
+        tile = material::Texture::layered(parse_texture_block(), tile);
+      }
+      if (!tile) fail(k.where, std::string(keyword) + " needs a texture {}");
+      expect("}", keyword);
+      b.blocks.push_back(tile);
+    }
+    return true;
+  }
   if (w == "texture_map") {
     raw_next();
     if (!b.active || !b.pattern.spec.value_pattern)
