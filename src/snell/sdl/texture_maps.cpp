@@ -33,26 +33,28 @@ bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
     return true;
   }
   if (w == "tiles") {
-    // The old form of a checker of textures: `tiles { texture {A}.. } tile2 { texture {B}.. }`.
+    // The old form of a checker of textures: `tiles { texture {A}.. tile2 texture {B}.. }`.
+    raw_next();
     b = TexturePatternBuilder{};
     b.active = true;
     b.pattern.start_pattern();
     b.pattern.spec.block_pattern = std::make_shared<texture::CheckerPattern>();
-    for (const char* keyword : {"tiles", "tile2"}) {
-      const Token k = peek();
-      if (!k.is_word(keyword))
-        fail(k.where, std::string("expected '") + keyword + "', found '" + k.text + "'");
-      raw_next();
-      expect("{", keyword);
-      std::shared_ptr<const material::Texture> tile;
+    expect("{", "tiles");
+    for (int tile = 0; tile < 2; ++tile) {
+      const Token at = peek();
+      if (tile == 1) {
+        if (!at.is_word("tile2")) fail(at.where, "expected 'tile2' in tiles, found '" + at.text + "'");
+        raw_next();
+      }
+      std::shared_ptr<const material::Texture> layers;
       while (peek().is_word("texture")) {
         raw_next();
-        tile = material::Texture::layered(parse_texture_block(), tile);
+        layers = material::Texture::layered(parse_texture_block(), layers);
       }
-      if (!tile) fail(k.where, std::string(keyword) + " needs a texture {}");
-      expect("}", keyword);
-      b.blocks.push_back(tile);
+      if (!layers) fail(at.where, "tiles needs a texture {} for each tile");
+      b.blocks.push_back(layers);
     }
+    expect("}", "tiles");
     return true;
   }
   if (w == "texture_map") {
