@@ -111,3 +111,15 @@ TEST(SdlTextureMap, TilesWithTile2IsACheckerOfTextures) {
   EXPECT_NEAR(t.pigment_at({0.5, 0.5, 0.5}, {0, 1, 0}, {}).rgb.r, 1.0, 1e-12);
   EXPECT_NEAR(t.pigment_at({1.5, 0.5, 0.5}, {0, 1, 0}, {}).rgb.r, 0.0, 1e-12);
 }
+
+TEST(SdlPatterns, SlopeFollowsTheSurfaceNormal) {
+  // slope y: asin(n . y) from [-pi/2, pi/2] onto [0, 1]: facing up ~1, sideways 0.5, 30 degrees up 2/3.
+  const scene::Scene s = sdl::test::parse("sphere { 0, 1 pigment { slope y } }");
+  const material::Texture& t = texture_of(s);
+  EXPECT_NEAR(t.pigment_at({1, 0, 0}, {1, 0, 0}, {}).rgb.r, 0.5, 1e-9);
+  EXPECT_NEAR(t.pigment_at({0, 0, 0}, normalize(math::Vec3{std::sqrt(3.0), 1, 0}), {}).rgb.r, 2.0 / 3, 1e-9);
+  EXPECT_NEAR(t.pigment_at({0, 1, 0}, {0, 1, 0}, {}).rgb.r, 1.0, 1e-6);
+  EXPECT_EQ(sdl::test::error_of("sphere { 0, 1 texture { slope { -z * 0.8 altitude z } texture_map { "
+                                "[0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }"),
+            "");
+}

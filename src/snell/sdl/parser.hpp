@@ -200,6 +200,8 @@ class Parser {
   /// `{ [type] "file" modifiers }` after `image_map` (image_maps.cpp).
   /// In a `bump_map`, `bump_size` (when given) takes its `bump_size`.
   std::shared_ptr<const material::Pigment> parse_image_map(double* bump_size = nullptr);
+  /// `<d>` or `{ <d> [, lo, hi] [altitude <a> [, lo, hi]] }` after `slope`.
+  std::shared_ptr<const texture::ValuePattern> parse_slope();
   /// `{ [IDENT] [v colour] ... }` after `color_map`.
   std::shared_ptr<const texture::ColorMap> parse_color_map();
   /// `{ [IDENT] [v pigment-body] ... }` after `pigment_map`.

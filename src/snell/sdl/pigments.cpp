@@ -10,6 +10,7 @@
 #include "snell/texture/image_pattern.hpp"
 #include "snell/texture/noise_patterns.hpp"
 #include "snell/texture/ripple_patterns.hpp"
+#include "snell/texture/slope_pattern.hpp"
 #include "snell/texture/spiral_patterns.hpp"
 #include "snell/texture/value_patterns.hpp"
 
@@ -30,9 +31,8 @@ PigmentPtr solid(const material::Rgbft& c) {
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
   static const char* const patterns[] = {
-      "average", "density_file", "facets",     "function",  "pavement",
-      "square",  "tiling",       "triangular", "object",    "slope",
-      "aoi",     "cubic",        "magnet",     "potential", "pigment_pattern"};
+      "average",    "density_file", "facets", "function", "pavement", "square",    "tiling",
+      "triangular", "object",       "aoi",    "cubic",    "magnet",   "potential", "pigment_pattern"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -117,6 +117,9 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     value = std::make_shared<texture::BozoPattern>();
   } else if (w == "granite") {
     value = std::make_shared<texture::GranitePattern>();
+  } else if (w == "slope") {
+    raw_next();
+    value = parse_slope();
   } else if (w == "image_pattern") {
     raw_next();
     auto image = std::dynamic_pointer_cast<const texture::ImageMapPigment>(parse_image_map());
@@ -136,7 +139,7 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     special = w;
   }
   if (value) {
-    if (w != "gradient" && w != "image_pattern") raw_next();
+    if (w != "gradient" && w != "image_pattern" && w != "slope") raw_next();
     b.start_pattern();
     b.spec.value_pattern = std::move(value);
     b.special = special;
@@ -364,6 +367,32 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     return false;
   }
   return true;
+}
+
+std::shared_ptr<const texture::ValuePattern> Parser::parse_slope() {
+  texture::SlopeParams params;
+  // The 3.5 form `slope <d>` or the 3.7 block `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }`.
+  if (!accept("{")) {
+    params.direction = parse_vector();
+    return std::make_shared<texture::SlopePattern>(params);
+  }
+  params.direction = parse_vector();
+  if (accept(",")) {
+    params.low = parse_float();
+    expect(",", "slope");
+    params.high = parse_float();
+  }
+  if (peek().is_word("altitude")) {
+    raw_next();
+    params.altitude = parse_vector();
+    if (accept(",")) {
+      params.altitude_low = parse_float();
+      expect(",", "slope altitude");
+      params.altitude_high = parse_float();
+    }
+  }
+  expect("}", "slope");
+  return std::make_shared<texture::SlopePattern>(params);
 }
 
 std::shared_ptr<const texture::ColorMap> Parser::parse_color_map() {

@@ -14,6 +14,8 @@ class ValuePattern {
   virtual ~ValuePattern() = default;
   /// The pattern's value at `p` (texture space), in [0,1] before the wave function.
   virtual double value(const Vec3& p) const = 0;
+  /// The value where the surface normal matters too (`slope`); `world_normal` is unit length.
+  virtual double value_at(const Vec3& p, const Vec3& world_normal) const { return value(p); }
 };
 
 /// A pattern with its own way of bending a surface normal (POV-Ray normal.cpp: bumps, dents, wrinkles,
