@@ -32,7 +32,7 @@ TEST(SdlErrors, CommonMistakes) {
   has("#error \"stop here\"", "test.pov:1:1: error: #error: stop here");
   has("sphere { 0, \"unterminated }", "unterminated string");
   has("/* never closed", "unterminated comment");
-  has("sphere { 0, 1 pigment { crackle } }", "pattern 'crackle' is not supported yet");
+  has("sphere { 0, 1 pigment { facets } }", "pattern 'facets' is not supported yet");
   has("sphere { 0, sqrt(-1) }", "sqrt: negative argument");
   has("#macro M(A, B) sphere { A, B } #end M(1)", "macro M takes 2 parameter(s), called with 1");
   has("sphere { 0, 1 matrix <0,0,0, 0,0,0, 0,0,0, 0,0,0> }", "singular matrix");

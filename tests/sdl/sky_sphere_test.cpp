@@ -40,3 +40,12 @@ TEST(SdlSkySphere, TransparentLayerShowsBackground) {
 
 }  // namespace
 }  // namespace snell::sdl
+
+TEST(SdlSkySphere, DeclaredSkySphereIsReusedAndModified) {
+  // skies.inc declares its skies this way: `#declare S = sky_sphere {..}` then `sky_sphere { S }`.
+  const snell::scene::Scene s = snell::sdl::test::parse(R"(
+    #declare S = sky_sphere { pigment { rgb <0.2, 0.4, 0.6> } }
+    sky_sphere { S rotate y * 30 })");
+  ASSERT_TRUE(s.sky_sphere.has_value());
+  EXPECT_EQ(s.sky_sphere->pigments.size(), 1u);
+}

@@ -31,18 +31,62 @@ std::shared_ptr<const Texture> Texture::layered(const std::shared_ptr<const Text
 
 namespace {
 
-Rgbft layer_pigment(const Texture& layer, const math::Vec3& world_point, const math::Vec3& world_normal,
-                    const math::Vec2& uv) {
-  if (!layer.pigment) return {};
-  if (layer.pigment->is_constant()) return layer.pigment->at({});
+/// The hit as a layer's patterns see it: the point in the layer's texture space.
+PatternPoint layer_point(const Texture& layer, const math::Vec3& world_point, const math::Vec3& world_normal,
+                         const math::Vec2& uv) {
   PatternPoint pp;
   pp.p = layer.transform.inverse_point(world_point);
   pp.world_normal = world_normal;
   pp.uv = uv;
-  return layer.pigment->at(pp);
+  return pp;
+}
+
+Rgbft layer_pigment(const Texture& layer, const math::Vec3& world_point, const math::Vec3& world_normal,
+                    const math::Vec2& uv) {
+  if (layer.selector) {
+    // The entries see the point in the mapped texture's space as their "world".
+    const PatternPoint pp = layer_point(layer, world_point, world_normal, uv);
+    const TextureSelector::Choice c = layer.selector->at(pp);
+    const Rgbft first = c.first->pigment_at(pp.p, world_normal, uv);
+    if (!c.second) return first;
+    return lerp(first, c.second->pigment_at(pp.p, world_normal, uv), c.weight);
+  }
+  if (!layer.pigment) return {};
+  if (layer.pigment->is_constant()) return layer.pigment->at({});
+  return layer.pigment->at(layer_point(layer, world_point, world_normal, uv));
 }
 
 }  // namespace
+
+math::Vec3 Texture::shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
+                                   const math::Vec2& uv) const {
+  for (const Texture* layer = this; layer; layer = layer->below.get()) {
+    if (!layer->normal && !layer->selector) continue;
+    const math::Vec3 local = normalize(layer->transform.inverse_normal(world_normal));
+    const PatternPoint pp = layer_point(*layer, world_point, world_normal, uv);
+    math::Vec3 bent;
+    if (layer->selector) {
+      // Each entry bends the normal in its own way; POV-Ray blends the results like colours.
+      const TextureSelector::Choice c = layer->selector->at(pp);
+      bent = c.first->shading_normal(pp.p, local, uv);
+      if (c.second) bent = bent * (1 - c.weight) + c.second->shading_normal(pp.p, local, uv) * c.weight;
+    } else {
+      bent = layer->normal->perturb(local, pp);
+    }
+    bent = layer->transform.normal(bent);
+    return dot(bent, bent) > 0 ? normalize(bent) : world_normal;
+  }
+  return world_normal;
+}
+
+const Finish& Texture::finish_at(const math::Vec3& world_point) const {
+  if (!selector) return finish;
+  PatternPoint pp;
+  pp.p = transform.inverse_point(world_point);
+  const TextureSelector::Choice c = selector->at(pp);
+  const Texture* dominant = c.second && c.weight > 0.5 ? c.second : c.first;
+  return dominant->finish_at(pp.p);
+}
 
 Rgbft Texture::pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
                           const math::Vec2& uv) const {

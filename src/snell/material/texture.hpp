@@ -2,17 +2,40 @@
 #include <memory>
 
 #include "snell/material/finish.hpp"
+#include "snell/material/normal.hpp"
 #include "snell/material/pigment.hpp"
 #include "snell/math/transform.hpp"
 
 namespace snell::material {
+
+struct Texture;
+
+/// A texture made of other textures chosen per point (POV-Ray 3.7 reference, "Texture Maps": `texture_map`
+/// and checker/hexagon/brick of textures). The entries' transforms are relative to the mapped texture's
+/// space, so moving the mapped texture moves them along.
+class TextureSelector {
+ public:
+  virtual ~TextureSelector() = default;
+  /// The entries around the pattern's value at `point` (in the mapped texture's space): `second`
+  /// weighs `weight`, `first` the rest; `second` is null when one entry covers the point.
+  struct Choice {
+    const Texture* first = nullptr;
+    const Texture* second = nullptr;
+    double weight = 0;
+  };
+  virtual Choice at(const PatternPoint& point) const = 0;
+};
 
 /// POV-Ray `texture { pigment normal finish }`. `transform` maps texture space to WORLD space: it holds the
 /// texture's own transforms plus every transform applied to the object after the texture was attached, so
 /// a pattern moves with its object exactly as in POV-Ray (which evaluates textures at the world point).
 struct Texture {
   std::shared_ptr<const Pigment> pigment;
+  /// `normal {}`: bends the shading normal; null for a smooth surface.
+  std::shared_ptr<const Normal> normal;
   Finish finish;
+  /// Set for a texture_map texture: then pigment, normal and finish come from the chosen entries.
+  std::shared_ptr<const TextureSelector> selector;
   math::Transform transform;
   /// The layer under this one (POV-Ray 3.7 reference, "Layered Textures": `texture {A} texture {B}` puts
   /// B on top of A; where B's pigment is transparent, A shows through). Null for a single texture.
@@ -26,6 +49,15 @@ struct Texture {
   /// The pigment of the whole stack at a world point: each layer's colour over the ones below by its
   /// filter and transmit.
   Rgbft pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal, const math::Vec2& uv) const;
+
+  /// The shading normal at a world point: `world_normal` (unit) bent by the first layer that has a
+  /// `normal {}`, in that layer's texture space; `world_normal` itself when none has.
+  math::Vec3 shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
+                            const math::Vec2& uv) const;
+
+  /// The finish at a world point: this layer's own, or for a texture map the finish of the entry that
+  /// weighs most there (finishes are not blended).
+  const Finish& finish_at(const math::Vec3& world_point) const;
 
   /// POV-Ray's default texture: black pigment, default finish.
   static std::shared_ptr<const Texture> default_texture();

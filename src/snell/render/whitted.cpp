@@ -94,10 +94,10 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   ShadingPoint sp;
   sp.ray = &ray;
   sp.hit = &hit;
-  sp.finish = &hit.object->texture->finish;
+  sp.finish = &hit.object->texture->finish_at(hit.point);
   sp.point = hit.point;
   sp.raw_normal = hit.normal;
-  sp.normal = hit.shading_normal;
+  sp.normal = hit.object->texture->shading_normal(hit.point, hit.shading_normal, hit.uv);
   // POV-Ray shades the side facing the viewer (trace.cpp, ComputeOneTextureColour flips the normal).
   if (dot(sp.raw_normal, ray.direction) > 0) {
     sp.raw_normal = -sp.raw_normal;

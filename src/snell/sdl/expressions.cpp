@@ -253,6 +253,14 @@ Value Parser::parse_rvalue() {
       raw_next();
       return Value{parse_pigment_map()};
     }
+    if (word.text == "sky_sphere") {
+      raw_next();
+      return Value{std::make_shared<const scene::SkySphere>(parse_sky_sphere())};
+    }
+    if (word.text == "normal") {
+      raw_next();
+      return Value{parse_normal_block()};
+    }
     if (word.text == "finish") {
       raw_next();
       return Value{parse_finish_block(material::Finish{})};

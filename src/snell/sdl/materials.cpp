@@ -1,6 +1,7 @@
 // pigment, finish, interior, texture and transform blocks (POV-Ray 3.7 reference, "Textures",
 // "Interior", "Transformations"). Pigments and their patterns are parsed in pigments.cpp.
 #include "snell/sdl/parser.hpp"
+#include "snell/sdl/pigment_builder.hpp"
 
 namespace snell::sdl {
 
@@ -246,11 +247,18 @@ std::shared_ptr<const material::Interior> Parser::parse_interior_block() {
 std::shared_ptr<const material::Texture> Parser::parse_texture_block() {
   const NestingGuard guard(*this, peek().where);
   expect("{", "texture");
+  return parse_texture_body("}");
+}
+
+std::shared_ptr<const material::Texture> Parser::parse_texture_body(const char* closer) {
+  const scene::SourceLocation where = peek().where;
   auto texture = std::make_shared<material::Texture>(*default_texture_);
   texture->pigment = nullptr;
+  TexturePatternBuilder patterned;
+  bool uv_mapping = false;
   for (;;) {
     const Token t = peek();
-    if (t.is_symbol("}")) {
+    if (t.is_symbol(closer)) {
       raw_next();
       break;
     }
@@ -266,19 +274,25 @@ std::shared_ptr<const material::Texture> Parser::parse_texture_block() {
       if (texture->below) texture->below = texture->below->transformed(*step);
       continue;
     }
+    if (parse_texture_pattern(patterned)) continue;
     raw_next();
-    if (w == "pigment") {
+    if (w == "uv_mapping") {
+      uv_mapping = true;  // applies to the texture's pigment (below)
+    } else if (w == "texture" && std::string(closer) == "]") {
+      *texture = *parse_texture_block();  // `[v texture {..}]` in a texture_map
+    } else if (w == "pigment") {
       texture->pigment = parse_pigment_block(texture->pigment);
     } else if (w == "finish") {
       texture->finish = parse_finish_block(texture->finish);
     } else if (w == "normal") {
-      warn(t.where, "normal is not supported yet; ignored");
-      skip_block("normal");
+      texture->normal = parse_normal_block();
     } else {
       fail(t.where, "unexpected '" + w + "' in texture");
     }
   }
+  if (patterned.active) finish_texture_pattern(patterned, *texture, where);
   if (!texture->pigment) texture->pigment = default_texture_->pigment;
+  if (uv_mapping) texture->pigment = std::make_shared<texture::UvMappedPigment>(texture->pigment);
   return texture;
 }
 

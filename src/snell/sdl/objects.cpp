@@ -555,8 +555,9 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
   } else if (w == "interior") {
     o.interior = parse_interior_block();
   } else if (w == "normal") {
-    warn(t.where, "normal is not supported yet; ignored");
-    skip_block("normal");
+    auto texture = ensure_texture();
+    texture->normal = parse_normal_block();
+    o.texture = std::move(texture);
   } else if (w == "no_shadow") {
     o.flags.no_shadow = true;
   } else if (w == "no_image") {

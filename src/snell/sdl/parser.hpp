@@ -229,6 +229,15 @@ class Parser {
   material::Finish parse_finish_block(const material::Finish& base);
   std::shared_ptr<const material::Interior> parse_interior_block();
   std::shared_ptr<const material::Texture> parse_texture_block();
+  /// The inside of a texture block up to `closer` ("}", or "]" for a texture_map entry).
+  std::shared_ptr<const material::Texture> parse_texture_body(const char* closer);
+  // Patterned textures (texture_maps.cpp).
+  struct TexturePatternBuilder;
+  /// A pattern, texture_map or pattern modifier inside a texture block, when one is next.
+  bool parse_texture_pattern(TexturePatternBuilder& builder);
+  /// Makes `texture` the patterned texture the builder describes.
+  void finish_texture_pattern(const TexturePatternBuilder& builder, material::Texture& texture,
+                              const scene::SourceLocation& where);
   /// One texture block and any `texture {..}` blocks after it, layered (the last on top).
   std::shared_ptr<const material::Texture> parse_layered_textures();
   std::shared_ptr<const material::Material> parse_material_block();
@@ -245,10 +254,25 @@ class Parser {
   bool parse_pattern_type(PigmentBuilder& builder);
   /// A pattern modifier (map, wave, turbulence, transform, brick size...) when one is next.
   bool parse_pattern_modifier(PigmentBuilder& builder);
+  /// `{ [type] "file" modifiers }` after `image_map` (image_maps.cpp).
+  /// In a `bump_map`, `bump_size` (when given) takes its `bump_size`.
+  std::shared_ptr<const material::Pigment> parse_image_map(double* bump_size = nullptr);
+  /// `<d>` or `{ <d> [, lo, hi] [altitude <a> [, lo, hi]] }` after `slope`.
+  std::shared_ptr<const texture::ValuePattern> parse_slope();
   /// `{ [IDENT] [v colour] ... }` after `color_map`.
   std::shared_ptr<const texture::ColorMap> parse_color_map();
   /// `{ [IDENT] [v pigment-body] ... }` after `pigment_map`.
   std::shared_ptr<const texture::PigmentMap> parse_pigment_map();
+
+  // ---- normals (normals.cpp) ----
+  struct NormalBuilder;
+  /// `{ ... }` after `normal`; null when the block names no pattern (`normal {}`).
+  std::shared_ptr<const material::Normal> parse_normal_block();
+  /// The inside of a normal block up to `closer` ("}", or "]" for a normal_map entry).
+  void parse_normal_body(NormalBuilder& builder, const char* closer);
+  /// `slope_map {..}` or `normal_map {..}` after its keyword, into the builder.
+  void parse_slope_map(NormalBuilder& builder);
+  void parse_normal_map(NormalBuilder& builder);
 
   // ---- objects (objects.cpp) ----
   std::optional<ParsedObject> parse_object_if_any();
@@ -286,7 +310,8 @@ class Parser {
   scene::CameraSpec parse_camera(const scene::CameraSpec& base);
   void parse_global_settings();
   void parse_background();
-  void parse_sky_sphere();
+  /// `{ ... }` after `sky_sphere` (also in `#declare S = sky_sphere {..}`).
+  scene::SkySphere parse_sky_sphere();
   scene::Scene finish_scene();
 
   ParseOptions options_;

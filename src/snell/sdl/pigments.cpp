@@ -5,7 +5,13 @@
 #include <stdexcept>
 
 #include "snell/sdl/parser.hpp"
+#include "snell/sdl/pigment_builder.hpp"
+#include "snell/texture/cellular_patterns.hpp"
+#include "snell/texture/image_pattern.hpp"
 #include "snell/texture/noise_patterns.hpp"
+#include "snell/texture/ripple_patterns.hpp"
+#include "snell/texture/slope_pattern.hpp"
+#include "snell/texture/spiral_patterns.hpp"
 #include "snell/texture/value_patterns.hpp"
 
 namespace snell::sdl {
@@ -25,97 +31,14 @@ PigmentPtr solid(const material::Rgbft& c) {
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
   static const char* const patterns[] = {
-      "average",    "bumps",    "cells",         "crackle", "density_file",    "dents",
-      "facets",     "function", "image_map",     "julia",   "mandel",          "pavement",
-      "quilted",    "ripples",  "spiral1",       "spiral2", "square",          "tiling",
-      "triangular", "waves",    "wrinkles",      "object",  "pigment_pattern", "slope",
-      "aoi",        "cubic",    "image_pattern", "magnet",  "potential",       "spherical_warp"};
+      "average",    "density_file", "facets", "function", "pavement", "square",    "tiling",
+      "triangular", "object",       "aoi",    "cubic",    "magnet",   "potential", "pigment_pattern"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
 }
 
 }  // namespace
-
-/// What a pigment block has said so far. With no pattern it is just `plain` (a colour or a declared
-/// pigment); with one it is a texture::PatternSpec in the making.
-struct Parser::PigmentBuilder {
-  PigmentPtr plain;
-  bool patterned = false;
-  texture::PatternSpec spec;  // warps without the classic turbulence, which is kept apart:
-  std::optional<texture::TurbulenceParams> turbulence;
-  std::vector<texture::PigmentMap::Entry> pigment_entries;
-  std::string special;  // marble, wood, agate: patterns that use the turbulence themselves
-  double agate_turb = 1.0;
-  bool brick = false;
-  math::Vec3 brick_size{8, 3, 4.5};
-  double mortar = 0.5;
-
-  /// Starts from an existing pigment: a patterned one can be modified further.
-  void start_from(const PigmentPtr& pigment) {
-    *this = PigmentBuilder{};
-    const auto* pattern = dynamic_cast<const texture::PatternPigment*>(pigment.get());
-    if (!pattern) {
-      plain = pigment;
-      return;
-    }
-    patterned = true;
-    spec = pattern->spec();
-    texture::WarpList rest;
-    for (const auto& w : spec.warps.warps()) {
-      const auto* t = dynamic_cast<const texture::TurbulenceWarp*>(w.get());
-      if (t && !turbulence && rest.empty())
-        turbulence = t->params();
-      else
-        rest.push(w);
-    }
-    spec.warps = rest;
-    if (spec.pigment_map) pigment_entries = spec.pigment_map->entries();
-    spec.pigment_map.reset();
-    brick = dynamic_cast<const texture::BrickPattern*>(spec.block_pattern.get()) != nullptr;
-  }
-
-  /// A pattern keyword replaces whatever colour or pattern came before it in the block.
-  void start_pattern() {
-    *this = PigmentBuilder{};
-    patterned = true;
-  }
-
-  texture::TurbulenceParams& turbulence_params() {
-    if (!turbulence) turbulence = texture::TurbulenceParams{};
-    return *turbulence;
-  }
-
-  void transform(const math::Transform& t) {
-    if (!patterned) {
-      plain = texture::transform_pigment(plain, t);
-      return;
-    }
-    spec.warps.push(std::make_shared<texture::TransformWarp>(t));
-    // Sub-pigments already given move with the pattern (POV-Ray transforms the map's pigments too).
-    for (auto& e : spec.block_entries) e = texture::transform_pigment(e, t);
-    for (auto& e : pigment_entries) e.second = texture::transform_pigment(e.second, t);
-  }
-
-  PigmentPtr build() const {
-    if (!patterned) return plain;
-    texture::PatternSpec out = spec;
-    if (brick) out.block_pattern = std::make_shared<texture::BrickPattern>(brick_size, mortar);
-    if (special == "marble") out.value_pattern = std::make_shared<texture::MarblePattern>(turbulence);
-    if (special == "wood") out.value_pattern = std::make_shared<texture::WoodPattern>(turbulence);
-    if (special == "agate")
-      out.value_pattern = std::make_shared<texture::AgatePattern>(
-          turbulence.value_or(texture::TurbulenceParams{}), agate_turb);
-    if (turbulence && special.empty()) {
-      texture::WarpList warps;
-      warps.push(std::make_shared<texture::TurbulenceWarp>(*turbulence));
-      for (const auto& w : spec.warps.warps()) warps.push(w);
-      out.warps = warps;
-    }
-    if (!pigment_entries.empty()) out.pigment_map.emplace(pigment_entries);
-    return std::make_shared<texture::PatternPigment>(std::move(out));
-  }
-};
 
 std::shared_ptr<const material::Pigment> Parser::parse_pigment_block(
     const std::shared_ptr<const material::Pigment>& base) {
@@ -144,6 +67,11 @@ void Parser::parse_pigment_body(PigmentBuilder& b, const char* closer) {
           continue;
         }
       }
+      if (t.text == "image_map") {
+        raw_next();
+        b.start_from(parse_image_map());
+        continue;
+      }
       if (parse_pattern_type(b)) continue;
       if (is_unsupported_pattern(t.text)) fail(t.where, "pattern '" + t.text + "' is not supported yet");
       if (parse_pattern_modifier(b)) continue;
@@ -166,6 +94,7 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
   const Token t = peek();
   const std::string& w = t.text;
   std::shared_ptr<const texture::ValuePattern> value;
+  std::string special;
   if (w == "gradient") {
     raw_next();
     const math::Vec3 direction = parse_vector();
@@ -188,16 +117,46 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     value = std::make_shared<texture::BozoPattern>();
   } else if (w == "granite") {
     value = std::make_shared<texture::GranitePattern>();
-  } else if (w == "marble" || w == "wood" || w == "agate") {
-    value = std::make_shared<texture::GranitePattern>();  // replaced in build(), with the turbulence
+  } else if (w == "slope") {
+    raw_next();
+    value = parse_slope();
+  } else if (w == "image_pattern") {
+    raw_next();
+    auto image = std::dynamic_pointer_cast<const texture::ImageMapPigment>(parse_image_map());
+    value = std::make_shared<texture::ImagePattern>(image);
+  } else if (w == "cells") {
+    value = std::make_shared<texture::CellsPattern>();
+  } else if (w == "wrinkles") {
+    value = std::make_shared<texture::WrinklesPattern>();
+  } else if (w == "bumps") {
+    value = std::make_shared<texture::BumpsPattern>();
+  } else if (w == "dents") {
+    value = std::make_shared<texture::DentsPattern>();
+  } else if (w == "marble" || w == "wood" || w == "agate" || w == "crackle" || w == "quilted" ||
+             w == "ripples" || w == "waves" || w == "spiral1" || w == "spiral2" || w == "mandel" ||
+             w == "julia") {
+    value = std::make_shared<texture::GranitePattern>();  // replaced in build_spec(), with its parameters
+    special = w;
   }
   if (value) {
-    if (w != "gradient") raw_next();
+    if (w != "gradient" && w != "image_pattern" && w != "slope") raw_next();
     b.start_pattern();
     b.spec.value_pattern = std::move(value);
+    b.special = special;
+    if (w == "spiral1" || w == "spiral2") b.arms = parse_float();
+    if (w == "julia") {
+      const Numeric c = parse_numeric();
+      b.julia_real = c.v[0];
+      b.julia_imaginary = c.size == 1 ? c.v[0] : c.v[1];
+      accept(",");
+    }
+    if (w == "mandel" || w == "julia") {
+      const double n = parse_float();
+      if (!(n >= 1 && n <= 1e6)) fail(t.where, "the iteration count must be between 1 and 1000000");
+      b.fractal.max_iterations = static_cast<int>(n);
+    }
     // POV-Ray's per-pattern defaults (pattern.cpp default maps and waves).
     using E = texture::ColorMap::Entry;
-    if (w == "marble" || w == "wood" || w == "agate") b.special = w;
     if (w == "marble" || w == "wood") b.spec.wave.wave = texture::Wave::triangle;
     if (w == "marble")
       b.spec.color_map =
@@ -365,9 +324,38 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     }
     if (!b.patterned) return true;  // a plain colour is the same everywhere
     b.spec.warps.push(std::make_shared<texture::TurbulenceWarp>(params));
+  } else if (w == "form" || w == "metric" || w == "offset" || w == "solid") {
+    raw_next();
+    if (b.special != "crackle") fail(t.where, "'" + w + "' is only for the crackle pattern");
+    if (w == "form") b.crackle.form = parse_vector();
+    if (w == "metric") b.crackle.metric = parse_float();
+    if (w == "offset") b.crackle.offset = parse_float();
+    if (w == "solid") b.crackle.solid = true;
+    if (!(b.crackle.metric > 0)) fail(t.where, "crackle metric must be positive");
+  } else if (w == "interior" || w == "exterior" || w == "exponent") {
+    raw_next();
+    if (b.special != "mandel" && b.special != "julia")
+      fail(t.where, "'" + w + "' is only for mandel and julia");
+    const double type = parse_float();
+    if (w == "exponent") {
+      if (type != 2) fail(t.where, "only exponent 2 is supported for mandel and julia");
+      return true;
+    }
+    accept(",");
+    const double factor = parse_float();
+    if (type < 0 || type > 3) fail(t.where, "only " + w + " types 0 to 3 are supported");
+    (w == "interior" ? b.fractal.interior_type : b.fractal.exterior_type) = static_cast<int>(type);
+    (w == "interior" ? b.fractal.interior_factor : b.fractal.exterior_factor) = factor;
+  } else if (w == "control0" || w == "control1") {
+    raw_next();
+    if (b.special != "quilted") fail(t.where, "'" + w + "' is only for the quilted pattern");
+    (w == "control0" ? b.control0 : b.control1) = parse_float();
   } else if (w == "agate_turb") {
     raw_next();
     b.agate_turb = parse_float();
+  } else if (w == "uv_mapping") {
+    raw_next();
+    b.uv_mapping = true;
   } else if (w == "quick_color" || w == "quick_colour") {
     raw_next();
     parse_color();
@@ -378,6 +366,32 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     return false;
   }
   return true;
+}
+
+std::shared_ptr<const texture::ValuePattern> Parser::parse_slope() {
+  texture::SlopeParams params;
+  // The 3.5 form `slope <d>` or the 3.7 block `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }`.
+  if (!accept("{")) {
+    params.direction = parse_vector();
+    return std::make_shared<texture::SlopePattern>(params);
+  }
+  params.direction = parse_vector();
+  if (accept(",")) {
+    params.low = parse_float();
+    expect(",", "slope");
+    params.high = parse_float();
+  }
+  if (peek().is_word("altitude")) {
+    raw_next();
+    params.altitude = parse_vector();
+    if (accept(",")) {
+      params.altitude_low = parse_float();
+      expect(",", "slope altitude");
+      params.altitude_high = parse_float();
+    }
+  }
+  expect("}", "slope");
+  return std::make_shared<texture::SlopePattern>(params);
 }
 
 std::shared_ptr<const texture::ColorMap> Parser::parse_color_map() {

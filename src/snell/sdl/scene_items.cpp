@@ -59,7 +59,7 @@ void Parser::parse_scene_items() {
     }
     if (t.text == "sky_sphere") {
       raw_next();
-      parse_sky_sphere();
+      scene_.sky_sphere = parse_sky_sphere();
       continue;
     }
     if (t.text == "fog" || t.text == "rainbow" || t.text == "media") {
@@ -79,7 +79,7 @@ void Parser::parse_scene_items() {
   }
 }
 
-void Parser::parse_sky_sphere() {
+scene::SkySphere Parser::parse_sky_sphere() {
   expect("{", "sky_sphere");
   scene::SkySphere sky;
   for (;;) {
@@ -87,6 +87,10 @@ void Parser::parse_sky_sphere() {
     if (t.is_symbol("}")) {
       raw_next();
       break;
+    }
+    if (auto declared = take_declared<std::shared_ptr<const scene::SkySphere>>()) {
+      sky = **declared;
+      continue;
     }
     if (t.is_word("pigment")) {
       raw_next();
@@ -105,7 +109,7 @@ void Parser::parse_sky_sphere() {
     }
     fail(t.where, "unexpected '" + t.text + "' in sky_sphere");
   }
-  scene_.sky_sphere = std::move(sky);
+  return sky;
 }
 
 void Parser::parse_background() {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "snell/texture/map_bracket.hpp"
+
 namespace snell::texture {
 
 ColorMap::ColorMap(std::vector<Entry> entries) : entries_(std::move(entries)) {
@@ -17,14 +19,9 @@ ColorMap ColorMap::default_map() {
 }
 
 material::Rgbft ColorMap::at(double value) const {
-  if (value <= entries_.front().first) return entries_.front().second;
-  if (value >= entries_.back().first) return entries_.back().second;
-  const auto upper = std::upper_bound(entries_.begin(), entries_.end(), value,
-                                      [](double v, const Entry& e) { return v < e.first; });
-  const auto lower = upper - 1;
-  const double span = upper->first - lower->first;
-  if (span <= 0) return upper->second;
-  return material::lerp(lower->second, upper->second, (value - lower->first) / span);
+  const MapBracket b = map_bracket(entries_, value);
+  if (b.lower == b.upper) return entries_[b.lower].second;
+  return material::lerp(entries_[b.lower].second, entries_[b.upper].second, b.weight);
 }
 
 }  // namespace snell::texture

@@ -46,4 +46,34 @@ double GranitePattern::value(const Vec3& p) const {
   return sum;
 }
 
+double WrinklesPattern::value(const Vec3& p) const {
+  double sum = 0, amplitude = 1, frequency = 1;
+  for (int i = 0; i < 10; ++i, amplitude *= 0.5, frequency *= 2) sum += amplitude * unit_noise(p * frequency);
+  return sum / 2;
+}
+
+Vec3 WrinklesPattern::bump(const Vec3& p) const {
+  Vec3 sum{0, 0, 0};
+  double frequency = 1;
+  for (int i = 0; i < 10; ++i, frequency *= 2) sum = sum + abs(vector_noise(p * frequency)) * (1 / frequency);
+  return sum;
+}
+
+double BumpsPattern::value(const Vec3& p) const {
+  return unit_noise(p);
+}
+
+Vec3 BumpsPattern::bump(const Vec3& p) const {
+  return vector_noise(p);
+}
+
+double DentsPattern::value(const Vec3& p) const {
+  const double n = unit_noise(p);
+  return n * n * n;
+}
+
+Vec3 DentsPattern::bump(const Vec3& p) const {
+  return vector_noise(p) * value(p);
+}
+
 }  // namespace snell::texture

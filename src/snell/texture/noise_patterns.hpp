@@ -48,4 +48,28 @@ class GranitePattern final : public ValuePattern {
   double value(const Vec3& p) const override;
 };
 
+/// `wrinkles`: ten octaves of noise, each twice the frequency and half the amplitude of the last, halved
+/// (POV-Ray pattern.cpp): about [0,1], centred near 0.5 and smoother than granite.
+/// As a normal, the absolute vector noise of the same octaves, which gives creases rather than bumps.
+class WrinklesPattern final : public ValuePattern, public BumpSource {
+ public:
+  double value(const Vec3& p) const override;
+  Vec3 bump(const Vec3& p) const override;
+};
+
+/// `bumps`: smooth noise in [0,1] (the bozo values); as a normal, vector noise added to the normal.
+class BumpsPattern final : public ValuePattern, public BumpSource {
+ public:
+  double value(const Vec3& p) const override;
+  Vec3 bump(const Vec3& p) const override;
+};
+
+/// `dents`: the cube of the noise in [0,1], mostly low with sparse peaks; as a normal, vector noise
+/// scaled by that value (dents where the noise is high).
+class DentsPattern final : public ValuePattern, public BumpSource {
+ public:
+  double value(const Vec3& p) const override;
+  Vec3 bump(const Vec3& p) const override;
+};
+
 }  // namespace snell::texture

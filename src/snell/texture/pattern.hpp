@@ -14,6 +14,18 @@ class ValuePattern {
   virtual ~ValuePattern() = default;
   /// The pattern's value at `p` (texture space), in [0,1] before the wave function.
   virtual double value(const Vec3& p) const = 0;
+  /// The value where the surface normal matters too (`slope`); `world_normal` is unit length.
+  virtual double value_at(const Vec3& p, const Vec3& world_normal) const { return value(p); }
+};
+
+/// A pattern with its own way of bending a surface normal (POV-Ray normal.cpp: bumps, dents, wrinkles,
+/// ripples, waves), used by `normal { pattern bump_size }` instead of the pattern's finite-difference
+/// gradient.
+class BumpSource {
+ public:
+  virtual ~BumpSource() = default;
+  /// The vector added to the unit normal (in pattern space) per unit of bump_size.
+  virtual Vec3 bump(const Vec3& p) const = 0;
 };
 
 class BlockPattern {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "snell/texture/map_bracket.hpp"
+
 namespace snell::texture {
 
 PigmentMap::PigmentMap(std::vector<Entry> entries) : entries_(std::move(entries)) {
@@ -14,15 +16,9 @@ PigmentMap::PigmentMap(std::vector<Entry> entries) : entries_(std::move(entries)
 }
 
 material::Rgbft PigmentMap::at(double value, const material::PatternPoint& point) const {
-  if (value <= entries_.front().first) return entries_.front().second->at(point);
-  if (value >= entries_.back().first) return entries_.back().second->at(point);
-  const auto upper = std::upper_bound(entries_.begin(), entries_.end(), value,
-                                      [](double v, const Entry& e) { return v < e.first; });
-  const auto lower = upper - 1;
-  const double span = upper->first - lower->first;
-  if (span <= 0) return upper->second->at(point);
-  const double t = (value - lower->first) / span;
-  return material::lerp(lower->second->at(point), upper->second->at(point), t);
+  const MapBracket b = map_bracket(entries_, value);
+  if (b.lower == b.upper) return entries_[b.lower].second->at(point);
+  return material::lerp(entries_[b.lower].second->at(point), entries_[b.upper].second->at(point), b.weight);
 }
 
 PatternPigment::PatternPigment(PatternSpec spec) : spec_(std::move(spec)) {
@@ -42,7 +38,7 @@ PatternPigment::PatternPigment(PatternSpec spec) : spec_(std::move(spec)) {
 material::Rgbft PatternPigment::at(const material::PatternPoint& point) const {
   const Vec3 p = spec_.warps.apply(point.p);
   if (spec_.block_pattern) return spec_.block_entries[spec_.block_pattern->block(p)]->at(point);
-  const double v = spec_.wave.apply(spec_.value_pattern->value(p));
+  const double v = spec_.wave.apply(spec_.value_pattern->value_at(p, point.world_normal));
   if (spec_.pigment_map) return spec_.pigment_map->at(v, point);
   return spec_.color_map->at(v);
 }
@@ -51,6 +47,12 @@ material::Rgbft TransformedPigment::at(const material::PatternPoint& point) cons
   material::PatternPoint moved = point;
   moved.p = transform_.inverse_point(point.p);
   return inner_->at(moved);
+}
+
+material::Rgbft UvMappedPigment::at(const material::PatternPoint& point) const {
+  material::PatternPoint uv = point;
+  uv.p = Vec3{point.uv.u, point.uv.v, 0};
+  return inner_->at(uv);
 }
 
 PigmentPtr transform_pigment(const PigmentPtr& pigment, const math::Transform& transform) {

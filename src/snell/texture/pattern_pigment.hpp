@@ -70,6 +70,18 @@ class TransformedPigment final : public material::Pigment {
   math::Transform transform_;
 };
 
+/// `uv_mapping` (POV-Ray 3.7 reference, "UV Mapping"): the inner pigment sees the surface's (u, v, 0)
+/// instead of the point in space; transforms written after uv_mapping move the pattern within uv space.
+class UvMappedPigment final : public material::Pigment {
+ public:
+  explicit UvMappedPigment(PigmentPtr inner) : inner_(std::move(inner)) {}
+  material::Rgbft at(const material::PatternPoint& point) const override;
+  bool is_constant() const override { return inner_->is_constant(); }
+
+ private:
+  PigmentPtr inner_;
+};
+
 /// `transform` applied to `pigment`, skipping the wrapper where it changes nothing.
 PigmentPtr transform_pigment(const PigmentPtr& pigment, const math::Transform& transform);
 

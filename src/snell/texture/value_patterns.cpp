@@ -57,7 +57,7 @@ double LeopardPattern::value(const Vec3& p) const {
 }
 
 double BozoPattern::value(const Vec3& p) const {
-  return std::clamp(0.5 + 0.5 * improved_perlin_noise(p), 0.0, 1.0);
+  return unit_noise(p);
 }
 
 }  // namespace snell::texture

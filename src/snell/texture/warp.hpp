@@ -68,5 +68,9 @@ class WarpList {
 /// Vector-valued fractal noise: each component an octave sum of signed improved noise, sampled at offset
 /// points so the three components are uncorrelated.
 Vec3 vector_turbulence(const Vec3& p, int octaves, double omega, double lambda);
+/// One octave of the vector noise, each component in about [-1, 1] (POV-Ray's DNoise in role).
+inline Vec3 vector_noise(const Vec3& p) {
+  return vector_turbulence(p, 1, 0.5, 2);
+}
 
 }  // namespace snell::texture
