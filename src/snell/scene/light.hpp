@@ -26,6 +26,8 @@ struct Light {
   int size1 = 1, size2 = 1;
   int adaptive = 0;
   bool jitter = false, circular = false, orient = false;
+  /// `area_illumination`: every grid point lights the surface from its own direction, not only shadows.
+  bool area_illumination = false;
   bool media_interaction = true, media_attenuation = false;
 };
 

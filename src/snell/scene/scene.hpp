@@ -5,10 +5,12 @@
 #include <optional>
 #include <vector>
 
+#include "snell/material/media.hpp"
 #include "snell/material/pigment.hpp"
 #include "snell/material/rgbft.hpp"
 #include "snell/math/transform.hpp"
 #include "snell/scene/camera.hpp"
+#include "snell/scene/fog.hpp"
 #include "snell/scene/light.hpp"
 #include "snell/scene/object.hpp"
 
@@ -39,6 +41,9 @@ struct Scene {
   CameraSpec camera;
   material::Rgbft background;
   std::optional<SkySphere> sky_sphere;
+  /// `fog {}` blocks and `media {}` at the top level (the atmosphere), in the order written.
+  std::vector<Fog> fogs;
+  std::vector<material::Media> atmosphere;
   GlobalSettings settings;
 
   /// The gamma the output is encoded relative to: POV-Ray 3.7 reads colours as linear under

@@ -253,6 +253,10 @@ Value Parser::parse_rvalue() {
       raw_next();
       return Value{parse_transform_block()};
     }
+    if (word.text == "media" || word.text == "density" || word.text == "fog" || word.text == "sky_sphere") {
+      raw_next();
+      return parse_atmospheric_value(word);
+    }
     if (word.text == "camera") {
       raw_next();
       return Value{parse_camera(scene::CameraSpec{})};

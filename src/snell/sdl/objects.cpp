@@ -406,14 +406,17 @@ ParsedObject Parser::parse_light(const Token& keyword) {
       light.fade_power = parse_float();
     } else if (w == "area_light") {
       light.area = true;
+      // The commas are optional, as POV-Ray's Parse_Comma makes them: `area_light <8,0,0> <0,8,0> 3 3`.
       light.axis1 = parse_vector();
-      expect(",", "area_light");
+      accept(",");
       light.axis2 = parse_vector();
-      expect(",", "area_light");
+      accept(",");
       light.size1 = static_cast<int>(parse_float());
-      expect(",", "area_light");
+      accept(",");
       light.size2 = static_cast<int>(parse_float());
       if (light.size1 < 1 || light.size2 < 1) fail(t.where, "area_light sizes must be at least 1");
+      if (light.size1 * static_cast<long>(light.size2) > 65536)
+        fail(t.where, "area_light grid too large (at most 65536 points)");
     } else if (w == "adaptive") {
       light.adaptive = static_cast<int>(parse_float());
     } else if (w == "jitter") {
@@ -423,7 +426,7 @@ ParsedObject Parser::parse_light(const Token& keyword) {
     } else if (w == "orient") {
       light.orient = true;
     } else if (w == "area_illumination") {
-      parse_bool_optional(true);
+      light.area_illumination = parse_bool_optional(true);
     } else if (w == "media_interaction") {
       light.media_interaction = parse_bool_optional(true);
     } else if (w == "media_attenuation") {
@@ -437,6 +440,8 @@ ParsedObject Parser::parse_light(const Token& keyword) {
       fail(t.where, "unknown light_source keyword '" + w + "'");
     }
   }
+  if (light.area && light.circular && (light.size1 <= 1 || light.size2 <= 1))
+    fail(keyword.where, "a circular area_light needs more than one point along each axis");
   // The light is in its own space; earlier transforms were applied to `o` (and fold in at flattening).
   o.light = light;
   return o;

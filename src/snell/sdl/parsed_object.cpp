@@ -7,6 +7,7 @@ namespace snell::sdl {
 void ParsedObject::apply(const math::Transform& t) {
   transform = t * transform;
   if (texture) texture = texture->transformed(t);
+  interior = material::Interior::transformed(interior, t);
 }
 
 namespace {
@@ -48,7 +49,7 @@ Inherited resolve(const ParsedObject& o, const Inherited& parent) {
       r.texture = o.texture->transformed(parent.to_world);
     }
   }
-  r.interior = o.interior ? o.interior : parent.interior;
+  r.interior = o.interior ? material::Interior::transformed(o.interior, parent.to_world) : parent.interior;
   r.flags = merge(o.flags, parent.flags);
   r.name = o.name.empty() ? parent.name : o.name;
   return r;

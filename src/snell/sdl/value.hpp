@@ -14,6 +14,7 @@
 #include "snell/material/pigment.hpp"
 #include "snell/material/texture.hpp"
 #include "snell/scene/camera.hpp"
+#include "snell/scene/scene.hpp"
 #include "snell/sdl/parsed_object.hpp"
 #include "snell/sdl/token.hpp"
 #include "snell/texture/color_map.hpp"
@@ -50,13 +51,16 @@ struct Value {
                std::shared_ptr<const material::Interior>, ParsedObject, std::shared_ptr<const Macro>,
                scene::CameraSpec, std::shared_ptr<const texture::ColorMap>,
                std::shared_ptr<const texture::PigmentMap>, std::shared_ptr<const function::Function>,
-               std::shared_ptr<const material::Material>, std::shared_ptr<Array>>
+               std::shared_ptr<const material::Material>, std::shared_ptr<Array>,
+               std::shared_ptr<const material::Media>, std::shared_ptr<const material::Density>,
+               std::shared_ptr<const scene::Fog>, std::shared_ptr<const scene::SkySphere>>
       data;
 
   const char* type_name() const {
-    static const char* names[] = {"number",    "string",      "transform", "pigment", "texture",
-                                  "finish",    "interior",    "object",    "macro",   "camera",
-                                  "color_map", "pigment_map", "function", "material", "array"};
+    static const char* names[] = {"number",    "string",      "transform", "pigment",   "texture",
+                                  "finish",    "interior",    "object",    "macro",     "camera",
+                                  "color_map", "pigment_map", "function",  "material",  "array",
+                                  "media",     "density",     "fog",       "sky_sphere"};
     if (const auto* n = std::get_if<Numeric>(&data))
       return n->color ? "color" : (n->size == 1 ? "float" : "vector");
     return names[data.index()];
