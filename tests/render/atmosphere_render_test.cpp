@@ -47,6 +47,29 @@ TEST(AtmosphereRenderTest, FogMixesTheSurfaceWithTheFogColour) {
   EXPECT_NEAR(c.b, 1 - t, 1e-9);
 }
 
+TEST(AtmosphereRenderTest, CameraInsideASolidThatIsNotHollowSeesNoFog) {
+  // POV-Ray starts camera rays inside the objects around the camera; fog applies only along rays inside
+  // hollow ones. A clear sphere around the camera, then a glowing wall 10 away through fog of distance 10.
+  auto make = [](bool hollow) {
+    scene::Scene s;
+    material::Finish glow;
+    glow.ambient = Color(1);
+    s.objects.push_back(test::object(std::make_shared<geometry::Plane>(Vec3(0, 0, -1), -10),
+                                     test::texture({Color(1, 0, 0)}, glow)));
+    auto shell = test::object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 0), 100.0),
+                              test::texture({Color(1), 0.0, 1.0}));
+    shell->flags.hollow = hollow;
+    s.objects.push_back(shell);
+    scene::Fog fog;
+    fog.distance = 10;
+    s.fogs.push_back(fog);
+    s.camera.location = {0, 0, 0};
+    return s;
+  };
+  EXPECT_NEAR(trace(make(true), {{0, 0, 0}, {0, 0, 1}}).r, std::exp(-1.0), 1e-9);
+  EXPECT_NEAR(trace(make(false), {{0, 0, 0}, {0, 0, 1}}).r, 1.0, 1e-9);
+}
+
 TEST(AtmosphereRenderTest, MediaAttenuationDimsLightThroughFog) {
   // Black fog of distance 10; the light 10 above the lit point reaches it thinned by exp(-1) only with
   // media_attenuation; the camera ray, sqrt(2) long, is thinned by exp(-sqrt(2) / 10) either way.

@@ -83,11 +83,25 @@ WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Acc
   for (const material::Media& m : scene.atmosphere) atmosphere_.push_back(&m);
   for (const auto& object : scene.objects)
     if (object->interior && !object->interior->media.empty()) has_interior_media_ = true;
+  has_atmosphere_ = has_interior_media_ || !scene.fogs.empty() || !scene.atmosphere.empty();
+  if (has_atmosphere_) camera_inside_ = containing(scene.camera.location);
 }
 
 Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context) const {
   ++context.counters.camera;
-  return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context);
+  if (!has_atmosphere_) return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context);
+  // POV-Ray starts camera rays inside every object that contains the camera (tracepixel.cpp,
+  // InitRayContainerState): fog and media then skip cameras inside solids that are not hollow, and media
+  // of a hollow object around the camera show. Done only in scenes with fog or media, where it matters.
+  const InteriorStack inside = ray.origin == scene_.camera.location ? camera_inside_ : containing(ray.origin);
+  return trace(ray, RayKind::camera, 1, 1.0, inside, context);
+}
+
+InteriorStack WhittedIntegrator::containing(const Vec3& point) const {
+  InteriorStack inside;
+  for (const auto& object : scene_.objects)
+    if (object->inside(point)) inside.push(object.get());
+  return inside;
 }
 
 Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double weight,
@@ -97,7 +111,7 @@ Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double w
   const bool found = accel_.intersect(ray, 0.0, math::kInfinity, kind, hit);
   const Color seen =
       found ? shade(ray, hit, level, weight, inside, context) : scene_.miss_color(ray.direction);
-  if (scene_.fogs.empty() && scene_.atmosphere.empty() && !has_interior_media_) return seen;
+  if (!has_atmosphere_) return seen;
   return through_atmosphere(ray, found ? hit.t : kSkyDepth, inside, seen, context);
 }
 

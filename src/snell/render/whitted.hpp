@@ -51,8 +51,14 @@ class WhittedIntegrator final : public Integrator {
 
   const scene::Scene& scene_;
   const accel::Accelerator& accel_;
+  /// The scene's objects that contain `point`, in scene order.
+  InteriorStack containing(const math::Vec3& point) const;
+
   std::vector<const material::Media*> atmosphere_;
   bool has_interior_media_ = false;
+  /// Fog or media anywhere: camera rays then start inside the objects around the camera.
+  bool has_atmosphere_ = false;
+  InteriorStack camera_inside_;
 };
 
 /// Origin for a ray leaving surface point `p` towards the side `side` points to: moved off the surface by
