@@ -38,6 +38,23 @@ TEST(SdlAtmosphere, AreaLightFlagsAndErrors) {
             std::string::npos);
 }
 
+TEST(SdlAtmosphere, LooksLikeObjectSitsAtTheLightAndCastsNoShadow) {
+  const auto s = test::parse(
+      "#declare Bulb = sphere { 0, 0.5 pigment { rgb 1 } }\n"
+      "light_source { <0, 5, 0> rgb 1 looks_like { Bulb scale 2 } translate <1, 0, 0> }");
+  ASSERT_EQ(s.lights.size(), 1u);
+  ASSERT_EQ(s.objects.size(), 1u);
+  EXPECT_TRUE(s.objects[0]->flags.no_shadow);
+  const math::Bounds3 b = s.objects[0]->world_bounds();
+  // POV-Ray moves the object to the light's centre first, then applies its modifiers (parser.cpp,
+  // Parse_Light_Source), so `scale 2` also doubles that offset: radius 1 around (0, 10, 0), then x + 1.
+  EXPECT_NEAR(b.lo.x, 0, 1e-9);
+  EXPECT_NEAR(b.hi.y, 11, 1e-9);
+  EXPECT_NEAR(s.lights[0].position.x, 1, 1e-12);
+  EXPECT_NE(test::error_of("light_source { 0 rgb 1 looks_like { 1 } }").find("expected an object"),
+            std::string::npos);
+}
+
 TEST(SdlAtmosphere, FogBlock) {
   const auto s = test::parse(
       "fog { fog_type 2 distance 150 colour rgbft <0.3, 0.5, 0.2, 0.1, 0.2> fog_offset 25 fog_alt 4 "

@@ -362,6 +362,7 @@ ParsedObject Parser::parse_light(const Token& keyword) {
   accept(",");
   light.color = parse_color().rgb;
   bool radius_set = false, falloff_set = false;
+  std::optional<ParsedObject> looks_like;
   for (;;) {
     const Token t = peek();
     if (t.is_symbol("}")) {
@@ -431,7 +432,19 @@ ParsedObject Parser::parse_light(const Token& keyword) {
       light.media_interaction = parse_bool_optional(true);
     } else if (w == "media_attenuation") {
       light.media_attenuation = parse_bool_optional(true);
-    } else if (w == "looks_like" || w == "projected_through") {
+    } else if (w == "looks_like") {
+      // POV-Ray 3.7 reference, "Looks_like": the object, placed at the light's centre, is drawn but casts
+      // no shadow, so the light shines out through it; later light transforms move both.
+      if (looks_like) fail(t.where, "only one looks_like is allowed per light_source");
+      expect("{", "looks_like");
+      const Token inner = peek();
+      looks_like = take_declared<ParsedObject>();
+      if (!looks_like) looks_like = parse_object_if_any();
+      if (!looks_like) fail(inner.where, "expected an object in looks_like");
+      looks_like->apply(math::Transform::translate(light.position));
+      parse_object_modifiers(*looks_like);  // up to and including the closing '}'
+      looks_like->flags.no_shadow = true;
+    } else if (w == "projected_through") {
       warn(t.where, w + " is not supported yet; ignored");
       skip_block(w);
     } else if (w == "photons") {
@@ -444,6 +457,7 @@ ParsedObject Parser::parse_light(const Token& keyword) {
     fail(keyword.where, "a circular area_light needs more than one point along each axis");
   // The light is in its own space; earlier transforms were applied to `o` (and fold in at flattening).
   o.light = light;
+  if (looks_like) o.children.push_back(std::move(*looks_like));
   return o;
 }
 
