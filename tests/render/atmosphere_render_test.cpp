@@ -85,6 +85,17 @@ TEST(AtmosphereRenderTest, MediaAttenuationDimsLightThroughFog) {
   EXPECT_NEAR(trace(s, ray).r, std::exp(-1.0) * camera_fog, 1e-9);
 }
 
+TEST(AtmosphereRenderTest, ProjectedThroughLightsOnlyWhereItsRayCrossesTheObject) {
+  scene::Scene s = white_floor();
+  scene::Light light = test::point_light({0, 10, 0});
+  // A small disc-like sphere 5 above the origin: the floor under it is lit, the floor 4 units aside is not.
+  light.projected_through.push_back(
+      test::object(std::make_shared<geometry::Sphere>(Vec3(0, 5, 0), 0.5), test::texture({Color(1)})));
+  s.lights.push_back(light);
+  EXPECT_NEAR(trace(s, {{0, 1, -1}, normalize(Vec3(0, -1, 1))}).r, 1.0, 1e-9);
+  EXPECT_EQ(trace(s, {{4, 1, -1}, normalize(Vec3(0, -1, 1))}).r, 0.0);
+}
+
 TEST(AtmosphereRenderTest, EmittingMediaGlowsOnlyInsideHollowObjects) {
   // A clear sphere of radius 1 filled with emission 0.25: a ray through its centre gains 0.25 x 2.
   auto make = [](bool hollow) {

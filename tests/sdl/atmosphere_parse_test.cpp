@@ -55,6 +55,16 @@ TEST(SdlAtmosphere, LooksLikeObjectSitsAtTheLightAndCastsNoShadow) {
             std::string::npos);
 }
 
+TEST(SdlAtmosphere, ProjectedThroughObjectMovesWithTheLightAndIsNotDrawn) {
+  const auto s = test::parse(
+      "#declare Mask = box { -1, 1 }\n"
+      "light_source { <0, 5, 0> rgb 1 projected_through { Mask } translate <2, 0, 0> }");
+  EXPECT_TRUE(s.objects.empty());
+  ASSERT_EQ(s.lights.size(), 1u);
+  ASSERT_EQ(s.lights[0].projected_through.size(), 1u);
+  EXPECT_NEAR(s.lights[0].projected_through[0]->world_bounds().lo.x, 1, 1e-9);
+}
+
 TEST(SdlAtmosphere, FogBlock) {
   const auto s = test::parse(
       "fog { fog_type 2 distance 150 colour rgbft <0.3, 0.5, 0.2, 0.1, 0.2> fog_offset 25 fog_alt 4 "

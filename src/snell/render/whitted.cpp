@@ -97,6 +97,16 @@ Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context)
   return trace(ray, RayKind::camera, 1, 1.0, inside, context);
 }
 
+bool WhittedIntegrator::crosses_projection(const scene::Light& light, const Vec3& point,
+                                           const LightRay& toward) const {
+  const Ray ray{point, toward.direction, 0.0};
+  for (const auto& object : light.projected_through) {
+    scene::SurfaceHit hit;
+    if (object->intersect(ray, 0.0, toward.distance, hit)) return true;
+  }
+  return false;
+}
+
 InteriorStack WhittedIntegrator::containing(const Vec3& point) const {
   InteriorStack inside;
   for (const auto& object : scene_.objects)
@@ -142,6 +152,7 @@ Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const 
 
 Color WhittedIntegrator::shadowed(const scene::Light& light, const Vec3& point, const Vec3& normal,
                                   const LightRay& toward, const Color& colour, TraceContext& context) const {
+  if (!light.projected_through.empty() && !crosses_projection(light, point, toward)) return Color(0);
   Color c = shadow_filter(point, normal, toward.direction, toward.distance, colour, context);
   // `media_attenuation`: the atmosphere's media and fog thin the light on its way (trace.cpp,
   // TraceShadowRay and ComputeShadowMedia; fog adds no colour to a shadow ray).

@@ -445,8 +445,15 @@ ParsedObject Parser::parse_light(const Token& keyword) {
       parse_object_modifiers(*looks_like);  // up to and including the closing '}'
       looks_like->flags.no_shadow = true;
     } else if (w == "projected_through") {
-      warn(t.where, w + " is not supported yet; ignored");
-      skip_block(w);
+      // POV-Ray 3.7 reference, "Projected_Through": light passes only where the ray to it crosses the object.
+      if (o.projected_through) fail(t.where, "only one projected_through is allowed per light_source");
+      expect("{", "projected_through");
+      const Token inner = peek();
+      auto through = take_declared<ParsedObject>();
+      if (!through) through = parse_object_if_any();
+      if (!through) fail(inner.where, "expected an object in projected_through");
+      parse_object_modifiers(*through);  // up to and including the closing '}'
+      o.projected_through = std::make_shared<const ParsedObject>(std::move(*through));
     } else if (w == "photons") {
       skip_block(w);
     } else {

@@ -55,8 +55,17 @@ Inherited resolve(const ParsedObject& o, const Inherited& parent) {
   return r;
 }
 
+void flatten_into(const ParsedObject& o, const Inherited& parent, std::vector<ObjectPtr>& objects,
+                  std::vector<scene::Light>& lights);
+
 void add_light(const ParsedObject& o, const math::Transform& to_world, std::vector<scene::Light>& lights) {
   scene::Light light = *o.light;
+  if (o.projected_through) {
+    Inherited placed;
+    placed.to_world = to_world;
+    std::vector<scene::Light> ignored;
+    flatten_into(*o.projected_through, placed, light.projected_through, ignored);
+  }
   light.position = to_world.point(light.position);
   light.point_at = to_world.point(light.point_at);
   light.axis1 = to_world.vector(light.axis1);
