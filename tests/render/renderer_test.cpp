@@ -10,8 +10,17 @@ namespace {
 using math::Color;
 using math::Vec3;
 
-RenderResult render_with(int threads, bool aa, bool jitter) {
-  const scene::Scene s = test::two_spheres();
+RenderResult render_with(int threads, bool aa, bool jitter, bool area_light = false) {
+  scene::Scene s = test::two_spheres();
+  if (area_light) {
+    // A jittered, adaptive area light: its random grid offsets must not depend on which thread traces.
+    scene::Light& l = s.lights.front();
+    l.area = l.jitter = true;
+    l.axis1 = {2, 0, 0};
+    l.axis2 = {0, 0, 2};
+    l.size1 = l.size2 = 5;
+    l.adaptive = 1;
+  }
   const auto accel = accel::make_accelerator("none", s);
   RenderOptions o;
   o.width = 72;
@@ -29,6 +38,17 @@ TEST(RendererTest, ImageIsBitIdenticalForAnyThreadCount) {
     const RenderResult two = render_with(2, aa, jitter);
     EXPECT_EQ(one.image.rgb, two.image.rgb) << "aa " << aa << " jitter " << jitter;
     EXPECT_EQ(one.rays.total(), two.rays.total());
+  }
+}
+
+TEST(RendererTest, JitteredAreaLightImageIsBitIdenticalForAnyThreadCount) {
+  for (const bool aa : {false, true}) {
+    const RenderResult one = render_with(1, aa, true, true);
+    const RenderResult two = render_with(2, aa, true, true);
+    EXPECT_EQ(one.image.rgb, two.image.rgb) << "aa " << aa;
+    EXPECT_EQ(one.rays.total(), two.rays.total());
+    // And the soft shadow differs from the point light's hard one.
+    EXPECT_NE(one.image.rgb, render_with(1, aa, true, false).image.rgb);
   }
 }
 

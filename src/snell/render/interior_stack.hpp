@@ -16,6 +16,7 @@ class InteriorStack {
   bool empty() const { return size_ == 0; }
   size_t size() const { return size_; }
   const scene::Object* back() const { return items_[size_ - 1]; }
+  const scene::Object* at(size_t i) const { return items_[i]; }
   bool contains(const scene::Object* o) const {
     for (size_t i = 0; i < size_; ++i)
       if (items_[i] == o) return true;

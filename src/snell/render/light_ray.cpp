@@ -24,14 +24,16 @@ Vec3 light_axis(const scene::Light& light) {
   return length_squared(axis) > 0 ? normalize(axis) : Vec3(0, -1, 0);
 }
 
-/// Attenuation for the cone of a spotlight, given the cosine between the axis and the direction to the point.
-/// The radius/falloff angles are compared as cosines; tightness sharpens the beam as cos^tightness.
+/// Attenuation for the cone of a spotlight, given the cosine between the axis and the direction to the point
+/// (POV-Ray 3.7 lightsource.cpp, Attenuate_Light): cos^tightness, times a smooth step from the falloff cone
+/// to the radius cone. The step applies whenever cos(radius) > 0, so `radius 0` gives a beam that fades
+/// all the way from its axis to the falloff angle.
 double spot_attenuation(const scene::Light& light, double cos_theta) {
   if (cos_theta <= 0) return 0;
-  double a = light.tightness > 0 ? std::pow(cos_theta, light.tightness) : 1.0;
+  double a = light.tightness != 0 ? std::pow(cos_theta, light.tightness) : 1.0;
   const double cos_radius = std::cos(math::radians(light.radius));
   const double cos_falloff = std::cos(math::radians(std::max(light.falloff, light.radius)));
-  if (light.radius > 0) a *= cone_spline(cos_falloff, cos_radius, cos_theta);
+  if (cos_radius > 0 && cos_theta < cos_radius) a *= cone_spline(cos_falloff, cos_radius, cos_theta);
   return a;
 }
 
@@ -51,33 +53,37 @@ double cylinder_attenuation(const scene::Light& light, const Vec3& axis, const V
 
 }  // namespace
 
-LightRay light_ray(const scene::Light& light, const Vec3& point) {
+LightRay light_direction(const scene::Light& light, const Vec3& point, const Vec3& offset) {
   LightRay r;
-  double attenuation = 1;
-  switch (light.kind) {
-    case scene::Light::Kind::parallel:
-    case scene::Light::Kind::cylinder: {
-      // Parallel beams: every point sees the light along the axis; shadows reach back to the plane through
-      // the light's position perpendicular to the axis.
-      const Vec3 axis = light_axis(light);
-      r.direction = -axis;
-      r.distance = dot(light.position - point, r.direction);
-      if (light.kind == scene::Light::Kind::cylinder) attenuation = cylinder_attenuation(light, axis, point);
-      break;
-    }
-    case scene::Light::Kind::point:
-    case scene::Light::Kind::spotlight: {
-      const Vec3 to_light = light.position - point;
-      r.distance = length(to_light);
-      r.direction = r.distance > 0 ? to_light / r.distance : Vec3(0, 1, 0);
-      if (light.kind == scene::Light::Kind::spotlight)
-        attenuation = spot_attenuation(light, -dot(r.direction, light_axis(light)));
-      break;
-    }
+  const Vec3 centre = light.position + offset;
+  if (light.kind == scene::Light::Kind::parallel || light.kind == scene::Light::Kind::cylinder) {
+    // Parallel beams: every point sees the light along the axis; shadows reach back to the plane through
+    // the light's centre perpendicular to the axis.
+    const Vec3 back = centre - light.point_at;
+    r.direction = length_squared(back) > 0 ? normalize(back) : Vec3(0, 1, 0);
+    r.distance = dot(centre - point, r.direction);
+  } else {
+    const Vec3 to_light = centre - point;
+    r.distance = length(to_light);
+    r.direction = r.distance > 0 ? to_light / r.distance : Vec3(0, 1, 0);
   }
-  if (light.fade_power > 0 && std::fabs(light.fade_distance) > 1e-10)
-    attenuation *= 2.0 / (1.0 + std::pow(std::fabs(r.distance) / light.fade_distance, light.fade_power));
-  r.color = light.color * attenuation;
+  return r;
+}
+
+double light_attenuation(const scene::Light& light, const Vec3& point, const LightRay& toward) {
+  double attenuation = 1;
+  if (light.kind == scene::Light::Kind::spotlight)
+    attenuation = spot_attenuation(light, -dot(toward.direction, light_axis(light)));
+  else if (light.kind == scene::Light::Kind::cylinder)
+    attenuation = cylinder_attenuation(light, light_axis(light), point);
+  if (attenuation > 0 && light.fade_power > 0 && std::fabs(light.fade_distance) > 1e-10)
+    attenuation *= 2.0 / (1.0 + std::pow(std::fabs(toward.distance) / light.fade_distance, light.fade_power));
+  return attenuation;
+}
+
+LightRay light_ray(const scene::Light& light, const Vec3& point) {
+  LightRay r = light_direction(light, point);
+  r.color = light.color * light_attenuation(light, point, r);
   return r;
 }
 

@@ -17,7 +17,16 @@ struct LightRay {
   math::Color color;
 };
 
+/// The ray from `point` towards the light with its colour after fade and cone attenuation.
 LightRay light_ray(const scene::Light& light, const math::Vec3& point);
+
+/// Direction and shadow distance from `point` towards the light's centre moved by `offset` (an area light's
+/// sample point); `color` is left black. Cylinder and parallel lights send parallel rays along the line from
+/// point_at to the moved centre (POV-Ray 3.7 trace.cpp, ComputeOneWhiteLightRay).
+LightRay light_direction(const scene::Light& light, const math::Vec3& point, const math::Vec3& offset = {});
+
+/// Fade and cone attenuation of the light reaching `point` along `toward` (from light_direction).
+double light_attenuation(const scene::Light& light, const math::Vec3& point, const LightRay& toward);
 
 /// POV-Ray's smooth step between `low` and `high` for spotlight edges: 0 below, 1 above, 3t^2-2t^3 between.
 double cone_spline(double low, double high, double x);

@@ -10,6 +10,7 @@
 #endif
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -95,7 +96,12 @@ RenderStats Renderer::render_into(io::Image& image) const {
   };
 
   // A point with no camera ray (outside a fisheye's circle) is black, as POV-Ray leaves it.
+  // Each camera sample draws its random numbers (area light jitter) from a generator seeded by where it
+  // falls in the image, so the image is the same for any thread count and tile order.
   auto trace_point = [&](double sx, double sy, TraceContext& ctx) {
+    ctx.rng.seed(math::mix_seed(std::bit_cast<uint64_t>(sx), std::bit_cast<uint64_t>(sy),
+                                static_cast<uint64_t>(options_.frame), options_.seed),
+                 0x5851f42d4c957f2dULL);
     const auto ray = camera->generate_ray(sx, sy, options_.time);
     return ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
   };

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "snell/render/area_light.hpp"
+#include "snell/render/fog.hpp"
 #include "snell/render/light_ray.hpp"
+#include "snell/render/media.hpp"
 #include "snell/render/optics.hpp"
 
 namespace snell::render {
@@ -21,6 +24,8 @@ constexpr double kEpsilon = 1e-10;
 /// transforms), so 1e-9 of the coordinates' magnitude stays well above their error and far below detail.
 constexpr double kRelativeOffset = 1e-9;
 constexpr double kAbsoluteOffset = 1e-9;
+/// How far a ray that hits nothing is taken to go through fog and media (POV-Ray's BOUND_HUGE).
+constexpr double kSkyDepth = 2e10;
 
 Color pow_color(const Color& c, double e) {
   return {std::pow(std::max(0.0, c.r), e), std::pow(std::max(0.0, c.g), e), std::pow(std::max(0.0, c.b), e)};
@@ -74,19 +79,90 @@ struct WhittedIntegrator::ShadingPoint {
 };
 
 WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)
-    : scene_(scene), accel_(accelerator) {}
+    : scene_(scene), accel_(accelerator) {
+  for (const material::Media& m : scene.atmosphere) atmosphere_.push_back(&m);
+  for (const auto& object : scene.objects)
+    if (object->interior && !object->interior->media.empty()) has_interior_media_ = true;
+  has_atmosphere_ = has_interior_media_ || !scene.fogs.empty() || !scene.atmosphere.empty();
+  if (has_atmosphere_) camera_inside_ = containing(scene.camera.location);
+}
 
 Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context) const {
   ++context.counters.camera;
-  return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context);
+  if (!has_atmosphere_) return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context);
+  // POV-Ray starts camera rays inside every object that contains the camera (tracepixel.cpp,
+  // InitRayContainerState): fog and media then skip cameras inside solids that are not hollow, and media
+  // of a hollow object around the camera show. Done only in scenes with fog or media, where it matters.
+  const InteriorStack inside = ray.origin == scene_.camera.location ? camera_inside_ : containing(ray.origin);
+  return trace(ray, RayKind::camera, 1, 1.0, inside, context);
+}
+
+bool WhittedIntegrator::crosses_projection(const scene::Light& light, const Vec3& point,
+                                           const LightRay& toward) const {
+  const Ray ray{point, toward.direction, 0.0};
+  for (const auto& object : light.projected_through) {
+    scene::SurfaceHit hit;
+    if (object->intersect(ray, 0.0, toward.distance, hit)) return true;
+  }
+  return false;
+}
+
+InteriorStack WhittedIntegrator::containing(const Vec3& point) const {
+  InteriorStack inside;
+  for (const auto& object : scene_.objects)
+    if (object->inside(point)) inside.push(object.get());
+  return inside;
 }
 
 Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double weight,
                                const InteriorStack& inside, TraceContext& context) const {
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return Color(0);
   scene::SurfaceHit hit;
-  if (!accel_.intersect(ray, 0.0, math::kInfinity, kind, hit)) return scene_.miss_color(ray.direction);
-  return shade(ray, hit, level, weight, inside, context);
+  const bool found = accel_.intersect(ray, 0.0, math::kInfinity, kind, hit);
+  const Color seen =
+      found ? shade(ray, hit, level, weight, inside, context) : scene_.miss_color(ray.direction);
+  if (!has_atmosphere_) return seen;
+  return through_atmosphere(ray, found ? hit.t : kSkyDepth, inside, seen, context);
+}
+
+Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const InteriorStack& inside,
+                                            Color seen, TraceContext& context) const {
+  // POV-Ray renders media and fog only along "hollow" rays: inside no solid that is not `hollow`
+  // (ray.cpp, Ray::AppendInterior). Media of the solids around the ray come first, then the atmosphere's,
+  // then fog (trace.cpp, ComputeLightedTexture and TraceRay).
+  for (size_t i = 0; i < inside.size(); ++i)
+    if (!inside.at(i)->flags.hollow) return seen;
+  const LightSampler light_at = [&](const scene::Light& light, const Vec3& p) {
+    const LightRay lr = light_ray(light, p);
+    if (max_abs(lr.color) < kEpsilon) return LightAtPoint{};
+    if (light.shadowless) return LightAtPoint{lr.color, lr.direction};
+    return LightAtPoint{shadowed(light, p, Vec3{0, 0, 0}, lr, lr.color, context), lr.direction};
+  };
+  std::vector<const material::Media*> media;
+  for (size_t i = 0; i < inside.size(); ++i)
+    if (const material::Interior* interior = inside.at(i)->interior.get())
+      for (const material::Media& m : interior->media) media.push_back(&m);
+  const double finite_depth = std::min(depth, kSkyDepth);
+  if (!media.empty())
+    seen = media_along(media, scene_.lights, ray, finite_depth, context.rng, light_at).apply(seen);
+  if (!scene_.atmosphere.empty())
+    seen = media_along(atmosphere_, scene_.lights, ray, finite_depth, context.rng, light_at).apply(seen);
+  return scene_.fogs.empty() ? seen : apply_fogs(scene_.fogs, ray, depth, seen);
+}
+
+Color WhittedIntegrator::shadowed(const scene::Light& light, const Vec3& point, const Vec3& normal,
+                                  const LightRay& toward, const Color& colour, TraceContext& context) const {
+  if (!light.projected_through.empty() && !crosses_projection(light, point, toward)) return Color(0);
+  Color c = shadow_filter(point, normal, toward.direction, toward.distance, colour, context);
+  // `media_attenuation`: the atmosphere's media and fog thin the light on its way (trace.cpp,
+  // TraceShadowRay and ComputeShadowMedia; fog adds no colour to a shadow ray).
+  if (light.media_attenuation && max_abs(c) >= kEpsilon) {
+    const Ray shadow_ray{point, toward.direction, 0.0};
+    const double depth = std::min(toward.distance, kSkyDepth);
+    if (!atmosphere_.empty()) c *= media_transmittance(atmosphere_, shadow_ray, depth);
+    if (!scene_.fogs.empty()) c *= fogs_along(scene_.fogs, shadow_ray, depth).through;
+  }
+  return c;
 }
 
 Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int level, double weight,
@@ -227,45 +303,91 @@ Color WhittedIntegrator::reflect(const ShadingPoint& sp, int level, double weigh
 }
 
 Color WhittedIntegrator::direct_light(const ShadingPoint& sp, TraceContext& context) const {
-  const material::Finish& f = *sp.finish;
-  const Color& pigment = sp.pigment.rgb;
-  const Vec3& eye = sp.ray->direction;
   const bool double_illuminate = sp.hit->object->flags.double_illuminate;
   Color sum;
   for (const scene::Light& light : scene_.lights) {
+    if (light.area && light.area_illumination) {
+      sum += full_area_light(sp, light, context);
+      continue;
+    }
     const LightRay lr = light_ray(light, sp.point);
     if (max_abs(lr.color) < kEpsilon) continue;
     const double cos_l = dot(sp.normal, lr.direction);
     if (!double_illuminate && cos_l < kEpsilon) continue;
     Color lc = lr.color;
     if (!light.shadowless) {
-      lc = shadow_filter(sp.point, sp.raw_normal, lr.direction, lr.distance, lc, context);
+      lc = light.area ? area_shadow(sp, light, lr, context)
+                      : shadowed(light, sp.point, sp.raw_normal, lr, lc, context);
       if (max_abs(lc) < kEpsilon) continue;
     }
-    // Diffuse (trace.cpp, ComputeDiffuseColour): |cos|^brilliance, reduced by the surface's opacity.
-    if (f.diffuse > 0) {
-      const double c = std::fabs(cos_l);
-      const double intensity = (f.brilliance != 1 ? std::pow(c, f.brilliance) : c) * f.diffuse * sp.opacity;
-      sum += intensity * pigment * lc;
+    sum += surface_response(sp, lr.direction, lc);
+  }
+  return sum;
+}
+
+Color WhittedIntegrator::area_shadow(const ShadingPoint& sp, const scene::Light& light,
+                                     const LightRay& centre, TraceContext& context) const {
+  const auto [axis1, axis2] = area_light_axes(light, centre.direction);
+  return area_light_shadow(light, axis1, axis2, context.rng, [&](const Vec3& offset) {
+    return shadowed(light, sp.point, sp.raw_normal, light_direction(light, sp.point, offset), centre.color,
+                    context);
+  });
+}
+
+Color WhittedIntegrator::full_area_light(const ShadingPoint& sp, const scene::Light& light,
+                                         TraceContext& context) const {
+  // `area_illumination` (POV-Ray 3.7 trace.cpp, ComputeFullAreaDiffuseLight): shadows as usual, then every
+  // grid point lights the surface as a point light of 1/(n1 n2) the colour, with its own direction, cone
+  // and fade. There is no cut-off for lights behind the surface before the shadow test.
+  LightRay centre = light_direction(light, sp.point);
+  centre.color = light.color;
+  Color lc = light.color;
+  if (!light.shadowless) lc = area_shadow(sp, light, centre, context);
+  if (max_abs(lc) < kEpsilon) return Color(0);
+  const auto [axis1, axis2] = area_light_axes(light, centre.direction);
+  const Color part = lc / static_cast<double>(light.size1 * light.size2);
+  const bool double_illuminate = sp.hit->object->flags.double_illuminate;
+  Color sum;
+  for (int v = 0; v < light.size2; ++v)
+    for (int u = 0; u < light.size1; ++u) {
+      const Vec3 offset = area_light_sample_offset(light, axis1, axis2, u, v, context.rng);
+      const LightRay r = light_direction(light, sp.point, offset);
+      if (!double_illuminate && dot(sp.normal, r.direction) < kEpsilon) continue;
+      sum += surface_response(sp, r.direction, part * light_attenuation(light, sp.point, r));
     }
-    // Phong: the mirror direction of the eye against the light direction, to the power phong_size.
-    if (f.phong > 0) {
-      const double c = dot(math::reflect(eye, sp.normal), lr.direction);
+  return sum;
+}
+
+Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to_light,
+                                          const Color& lc) const {
+  const material::Finish& f = *sp.finish;
+  const Color& pigment = sp.pigment.rgb;
+  const Vec3& eye = sp.ray->direction;
+  const double cos_l = dot(sp.normal, to_light);
+  Color sum;
+  // Diffuse (trace.cpp, ComputeDiffuseColour): |cos|^brilliance, reduced by the surface's opacity.
+  if (f.diffuse > 0) {
+    const double c = std::fabs(cos_l);
+    const double intensity = (f.brilliance != 1 ? std::pow(c, f.brilliance) : c) * f.diffuse * sp.opacity;
+    sum += intensity * pigment * lc;
+  }
+  // Phong: the mirror direction of the eye against the light direction, to the power phong_size.
+  if (f.phong > 0) {
+    const double c = dot(math::reflect(eye, sp.normal), to_light);
+    if (c > 0) {
+      const double intensity = f.phong * std::pow(c, f.phong_size);
+      sum += intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
+    }
+  }
+  // Specular: Blinn's halfway vector, exponent 1/roughness.
+  if (f.specular > 0) {
+    const Vec3 h = 0.5 * (to_light - eye);
+    const double hl = length(h);
+    if (hl > 0) {
+      const double c = dot(h, sp.normal) / hl;
       if (c > 0) {
-        const double intensity = f.phong * std::pow(c, f.phong_size);
+        const double intensity = f.specular * std::pow(c, 1.0 / f.roughness);
         sum += intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
-      }
-    }
-    // Specular: Blinn's halfway vector, exponent 1/roughness.
-    if (f.specular > 0) {
-      const Vec3 h = 0.5 * (lr.direction - eye);
-      const double hl = length(h);
-      if (hl > 0) {
-        const double c = dot(h, sp.normal) / hl;
-        if (c > 0) {
-          const double intensity = f.specular * std::pow(c, 1.0 / f.roughness);
-          sum += intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
-        }
       }
     }
   }

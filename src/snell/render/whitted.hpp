@@ -3,9 +3,12 @@
 // functions it calls), rewritten for snell's scene model: ambient/emission, diffuse with brilliance, phong,
 // specular, metallic highlights, reflection (min/max, fresnel, falloff, exponent, metallic), refraction
 // with total internal reflection, filter/transmit and filtered shadows, termination by max_trace_level
-// and adc_bailout. Single-layer textures; area lights, normals, media and photons come later.
+// and adc_bailout. Area lights with POV-Ray's adaptive grid; photons come later.
+#include <vector>
+
 #include "snell/render/integrator.hpp"
 #include "snell/render/interior_stack.hpp"
+#include "snell/render/light_ray.hpp"
 
 namespace snell::render {
 
@@ -26,6 +29,20 @@ class WhittedIntegrator final : public Integrator {
   math::Color shade(const math::Ray& ray, const scene::SurfaceHit& hit, int level, double weight,
                     const InteriorStack& inside, TraceContext& context) const;
   math::Color direct_light(const ShadingPoint& sp, TraceContext& context) const;
+  /// Mean light through an area light's shadow rays; `centre` is the ray to its centre, with its colour.
+  math::Color area_shadow(const ShadingPoint& sp, const scene::Light& light, const LightRay& centre,
+                          TraceContext& context) const;
+  /// An `area_illumination` light: each grid point shades the surface from its own direction.
+  math::Color full_area_light(const ShadingPoint& sp, const scene::Light& light, TraceContext& context) const;
+  /// Diffuse, phong and specular light reflected towards the eye from light `lc` arriving along `to_light`.
+  math::Color surface_response(const ShadingPoint& sp, const math::Vec3& to_light,
+                               const math::Color& lc) const;
+  /// `seen` at `depth` along the ray as it reaches the ray's origin through media and fog.
+  math::Color through_atmosphere(const math::Ray& ray, double depth, const InteriorStack& inside,
+                                 math::Color seen, TraceContext& context) const;
+  /// `colour` from `light` after shadows along `toward` and, with media_attenuation, the atmosphere.
+  math::Color shadowed(const scene::Light& light, const math::Vec3& point, const math::Vec3& normal,
+                       const LightRay& toward, const math::Color& colour, TraceContext& context) const;
   /// Light reaching `point` from direction `dir` within `distance`, tinted by transparent blockers.
   math::Color shadow_filter(const math::Vec3& point, const math::Vec3& normal, const math::Vec3& dir,
                             double distance, math::Color light, TraceContext& context) const;
@@ -34,6 +51,16 @@ class WhittedIntegrator final : public Integrator {
 
   const scene::Scene& scene_;
   const accel::Accelerator& accel_;
+  /// Whether the ray from `point` towards the light crosses its projected_through object.
+  bool crosses_projection(const scene::Light& light, const math::Vec3& point, const LightRay& toward) const;
+  /// The scene's objects that contain `point`, in scene order.
+  InteriorStack containing(const math::Vec3& point) const;
+
+  std::vector<const material::Media*> atmosphere_;
+  bool has_interior_media_ = false;
+  /// Fog or media anywhere: camera rays then start inside the objects around the camera.
+  bool has_atmosphere_ = false;
+  InteriorStack camera_inside_;
 };
 
 /// Origin for a ray leaving surface point `p` towards the side `side` points to: moved off the surface by

@@ -1,6 +1,10 @@
 #pragma once
+#include <memory>
+#include <vector>
+
 #include "snell/math/color.hpp"
 #include "snell/math/vec3.hpp"
+#include "snell/scene/object.hpp"
 
 namespace snell::scene {
 
@@ -26,7 +30,12 @@ struct Light {
   int size1 = 1, size2 = 1;
   int adaptive = 0;
   bool jitter = false, circular = false, orient = false;
+  /// `area_illumination`: every grid point lights the surface from its own direction, not only shadows.
+  bool area_illumination = false;
   bool media_interaction = true, media_attenuation = false;
+  /// `projected_through { object }`: light reaches only the points whose ray to the light crosses one of
+  /// these (the object itself is not drawn).
+  std::vector<std::shared_ptr<const Object>> projected_through;
 };
 
 }  // namespace snell::scene

@@ -7,10 +7,12 @@
 #include <optional>
 #include <vector>
 
+#include "snell/material/media.hpp"
 #include "snell/material/pigment.hpp"
 #include "snell/material/rgbft.hpp"
 #include "snell/math/transform.hpp"
 #include "snell/scene/camera.hpp"
+#include "snell/scene/fog.hpp"
 #include "snell/scene/light.hpp"
 #include "snell/scene/object.hpp"
 
@@ -41,6 +43,9 @@ struct Scene {
   CameraSpec camera;
   material::Rgbft background;
   std::optional<SkySphere> sky_sphere;
+  /// `fog {}` blocks and `media {}` at the top level (the atmosphere), in the order written.
+  std::vector<Fog> fogs;
+  std::vector<material::Media> atmosphere;
   GlobalSettings settings;
   /// Checks to run after rendering, each returning a warning or an empty string (e.g. an isosurface whose
   /// rays met slopes steeper than its max_gradient).

@@ -253,10 +253,6 @@ Value Parser::parse_rvalue() {
       raw_next();
       return Value{parse_pigment_map()};
     }
-    if (word.text == "sky_sphere") {
-      raw_next();
-      return Value{std::make_shared<const scene::SkySphere>(parse_sky_sphere())};
-    }
     if (word.text == "normal") {
       raw_next();
       return Value{parse_normal_block()};
@@ -288,6 +284,10 @@ Value Parser::parse_rvalue() {
     if (word.text == "transform") {
       raw_next();
       return Value{parse_transform_block()};
+    }
+    if (word.text == "media" || word.text == "density" || word.text == "fog" || word.text == "sky_sphere") {
+      raw_next();
+      return parse_atmospheric_value(word);
     }
     if (word.text == "camera") {
       raw_next();

@@ -236,8 +236,8 @@ std::shared_ptr<const material::Interior> Parser::parse_interior_block() {
     else if (w == "fade_color")
       interior->fade_color = parse_color().rgb;
     else if (w == "media") {
-      warn(t.where, "media is not supported yet; ignored");
-      skip_block("media");
+      // An unsupported media is dropped (parse_media_block warned).
+      if (auto media = parse_media_block()) interior->media.push_back(std::move(*media));
     } else {
       fail(t.where, "unknown interior keyword '" + w + "'");
     }

@@ -383,6 +383,7 @@ ParsedObject Parser::parse_light(const Token& keyword) {
     light.color = parse_color().rgb;
   }
   bool radius_set = false, falloff_set = false;
+  std::optional<ParsedObject> looks_like;
   for (;;) {
     const Token t = peek();
     if (t.is_symbol("}")) {
@@ -436,6 +437,8 @@ ParsedObject Parser::parse_light(const Token& keyword) {
       accept(",");
       light.size2 = parse_int("area_light size");
       if (light.size1 < 1 || light.size2 < 1) fail(t.where, "area_light sizes must be at least 1");
+      if (light.size1 * static_cast<long>(light.size2) > 65536)
+        fail(t.where, "area_light grid too large (at most 65536 points)");
     } else if (w == "adaptive") {
       light.adaptive = parse_int("adaptive");
     } else if (w == "jitter") {
@@ -445,22 +448,44 @@ ParsedObject Parser::parse_light(const Token& keyword) {
     } else if (w == "orient") {
       light.orient = true;
     } else if (w == "area_illumination") {
-      parse_bool_optional(true);
+      light.area_illumination = parse_bool_optional(true);
     } else if (w == "media_interaction") {
       light.media_interaction = parse_bool_optional(true);
     } else if (w == "media_attenuation") {
       light.media_attenuation = parse_bool_optional(true);
-    } else if (w == "looks_like" || w == "projected_through") {
-      warn(t.where, w + " is not supported yet; ignored");
-      skip_block(w);
+    } else if (w == "looks_like") {
+      // POV-Ray 3.7 reference, "Looks_like": the object, placed at the light's centre, is drawn but casts
+      // no shadow, so the light shines out through it; later light transforms move both.
+      if (looks_like) fail(t.where, "only one looks_like is allowed per light_source");
+      expect("{", "looks_like");
+      const Token inner = peek();
+      looks_like = take_declared<ParsedObject>();
+      if (!looks_like) looks_like = parse_object_if_any();
+      if (!looks_like) fail(inner.where, "expected an object in looks_like");
+      looks_like->apply(math::Transform::translate(light.position));
+      parse_object_modifiers(*looks_like);  // up to and including the closing '}'
+      looks_like->flags.no_shadow = true;
+    } else if (w == "projected_through") {
+      // POV-Ray 3.7 reference, "Projected_Through": light passes only where the ray to it crosses the object.
+      if (o.projected_through) fail(t.where, "only one projected_through is allowed per light_source");
+      expect("{", "projected_through");
+      const Token inner = peek();
+      auto through = take_declared<ParsedObject>();
+      if (!through) through = parse_object_if_any();
+      if (!through) fail(inner.where, "expected an object in projected_through");
+      parse_object_modifiers(*through);  // up to and including the closing '}'
+      o.projected_through = std::make_shared<const ParsedObject>(std::move(*through));
     } else if (w == "photons") {
       skip_block(w);
     } else {
       fail(t.where, "unknown light_source keyword '" + w + "'");
     }
   }
+  if (light.area && light.circular && (light.size1 <= 1 || light.size2 <= 1))
+    fail(keyword.where, "a circular area_light needs more than one point along each axis");
   // The light is in its own space; earlier transforms were applied to `o` (and fold in at flattening).
   o.light = light;
+  if (looks_like) o.children.push_back(std::move(*looks_like));
   return o;
 }
 

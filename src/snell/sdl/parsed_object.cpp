@@ -7,6 +7,7 @@ namespace snell::sdl {
 void ParsedObject::apply(const math::Transform& t) {
   transform = t * transform;
   if (texture) texture = texture->transformed(t);
+  interior = material::Interior::transformed(interior, t);
 }
 
 long long count_nodes(const ParsedObject& object, long long limit) {
@@ -58,14 +59,23 @@ Inherited resolve(const ParsedObject& o, const Inherited& parent) {
       r.texture = o.texture->transformed(parent.to_world);
     }
   }
-  r.interior = o.interior ? o.interior : parent.interior;
+  r.interior = o.interior ? material::Interior::transformed(o.interior, parent.to_world) : parent.interior;
   r.flags = merge(o.flags, parent.flags);
   r.name = o.name.empty() ? parent.name : o.name;
   return r;
 }
 
+void flatten_into(const ParsedObject& o, const Inherited& parent, std::vector<ObjectPtr>& objects,
+                  std::vector<scene::Light>& lights);
+
 void add_light(const ParsedObject& o, const math::Transform& to_world, std::vector<scene::Light>& lights) {
   scene::Light light = *o.light;
+  if (o.projected_through) {
+    Inherited placed;
+    placed.to_world = to_world;
+    std::vector<scene::Light> ignored;
+    flatten_into(*o.projected_through, placed, light.projected_through, ignored);
+  }
   light.position = to_world.point(light.position);
   light.point_at = to_world.point(light.point_at);
   light.axis1 = to_world.vector(light.axis1);

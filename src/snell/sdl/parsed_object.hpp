@@ -19,6 +19,8 @@ struct ParsedObject {
   /// Null for a union or CSG (children hold the parts) or a light.
   std::shared_ptr<const geometry::Shape> shape;
   std::optional<scene::Light> light;
+  /// A light's `projected_through` object, in the light's space.
+  std::shared_ptr<const ParsedObject> projected_through;
   std::vector<ParsedObject> children;
   Combine combine = Combine::union_of;
   /// `clipped_by` objects, in this object's own space (before `transform`).

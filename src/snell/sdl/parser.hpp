@@ -310,8 +310,16 @@ class Parser {
   scene::CameraSpec parse_camera(const scene::CameraSpec& base);
   void parse_global_settings();
   void parse_background();
-  /// `{ ... }` after `sky_sphere` (also in `#declare S = sky_sphere {..}`).
-  scene::SkySphere parse_sky_sphere();
+
+  // ---- fog, media, density (atmosphere.cpp) ----
+  /// `{ ... }` after `fog`, `media`, `density` or `sky_sphere` (its keyword `word`), as a declarable value.
+  Value parse_atmospheric_value(const Token& word);
+  scene::Fog parse_fog_block();
+  /// Null when the media (or density) uses a pattern snell does not support yet: it is then ignored, with
+  /// a warning, as POV-Ray scenes mostly stay readable without it.
+  std::optional<material::Media> parse_media_block();
+  std::optional<material::Density> parse_density_block();
+  scene::SkySphere parse_sky_sphere_block();
   scene::Scene finish_scene();
 
   ParseOptions options_;

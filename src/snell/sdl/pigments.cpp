@@ -66,6 +66,14 @@ void Parser::parse_pigment_body(PigmentBuilder& b, const char* closer) {
           b.start_from(copy);
           continue;
         }
+        if (const auto* d = std::get_if<std::shared_ptr<const material::Density>>(&v->data)) {
+          // `density { DeclaredDensity ... }`; a density declared from an unsupported pattern is empty.
+          if (!*d) fail(t.where, "density '" + t.text + "' uses a pattern that is not supported yet");
+          const PigmentPtr copy = (*d)->pigment;
+          raw_next();
+          b.start_from(copy);
+          continue;
+        }
       }
       if (t.text == "image_map") {
         raw_next();
@@ -244,7 +252,8 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     need_value_pattern();
     b.spec.color_map = *parse_color_map();
     b.pigment_entries.clear();
-  } else if (w == "pigment_map") {
+  } else if (w == "pigment_map" || w == "density_map") {
+    // A density_map's entries are colours or densities: read as a pigment map of either.
     raw_next();
     need_value_pattern();
     b.pigment_entries = parse_pigment_map()->entries();

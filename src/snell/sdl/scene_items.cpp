@@ -59,12 +59,22 @@ void Parser::parse_scene_items() {
     }
     if (t.text == "sky_sphere") {
       raw_next();
-      scene_.sky_sphere = parse_sky_sphere();
+      scene_.sky_sphere = parse_sky_sphere_block();
       continue;
     }
-    if (t.text == "fog" || t.text == "rainbow" || t.text == "media") {
+    if (t.text == "fog") {
       raw_next();
-      warn(t.where, t.text + " is not supported yet; ignored");
+      scene_.fogs.push_back(parse_fog_block());
+      continue;
+    }
+    if (t.text == "media") {
+      raw_next();
+      if (auto media = parse_media_block()) scene_.atmosphere.push_back(std::move(*media));
+      continue;
+    }
+    if (t.text == "rainbow") {
+      raw_next();
+      warn(t.where, "rainbow is not supported yet; ignored");
       skip_block(t.text);
       continue;
     }
@@ -77,39 +87,6 @@ void Parser::parse_scene_items() {
       fail(t.where, "'" + t.text + "' cannot stand alone here; use object { " + t.text + " }");
     fail(t.where, "unknown keyword '" + t.text + "'");
   }
-}
-
-scene::SkySphere Parser::parse_sky_sphere() {
-  expect("{", "sky_sphere");
-  scene::SkySphere sky;
-  for (;;) {
-    const Token t = peek();
-    if (t.is_symbol("}")) {
-      raw_next();
-      break;
-    }
-    if (auto declared = take_declared<std::shared_ptr<const scene::SkySphere>>()) {
-      sky = **declared;
-      continue;
-    }
-    if (t.is_word("pigment")) {
-      raw_next();
-      sky.pigments.push_back(parse_pigment_block(nullptr));
-      continue;
-    }
-    if (auto step = parse_transform_item()) {
-      sky.transform = *step * sky.transform;
-      continue;
-    }
-    if (t.is_word("emission")) {
-      raw_next();
-      warn(t.where, "sky_sphere emission is not supported yet; ignored");
-      parse_color();
-      continue;
-    }
-    fail(t.where, "unexpected '" + t.text + "' in sky_sphere");
-  }
-  return sky;
 }
 
 void Parser::parse_background() {

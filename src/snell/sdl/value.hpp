@@ -53,13 +53,16 @@ struct Value {
       ParsedObject, std::shared_ptr<const Macro>, scene::CameraSpec, std::shared_ptr<const texture::ColorMap>,
       std::shared_ptr<const texture::PigmentMap>, std::shared_ptr<const function::Function>,
       std::shared_ptr<const material::Material>, std::shared_ptr<Array>, std::shared_ptr<const Spline>,
-      std::shared_ptr<const material::Normal>, std::shared_ptr<const scene::SkySphere>>
+      std::shared_ptr<const material::Normal>, std::shared_ptr<const scene::SkySphere>,
+      std::shared_ptr<const material::Media>, std::shared_ptr<const material::Density>,
+      std::shared_ptr<const scene::Fog>>
       data;
 
   const char* type_name() const {
     static const char* names[] = {"number",   "string",   "transform", "pigment", "texture",   "finish",
                                   "interior", "object",   "macro",     "camera",  "color_map", "pigment_map",
-                                  "function", "material", "array",     "spline",   "normal",    "sky_sphere"};
+                                  "function", "material", "array",     "spline",   "normal",    "sky_sphere",
+                                  "media",    "density",  "fog"};
     if (const auto* n = std::get_if<Numeric>(&data))
       return n->color ? "color" : (n->size == 1 ? "float" : "vector");
     return names[data.index()];
