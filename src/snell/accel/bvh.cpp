@@ -33,7 +33,10 @@ class Builder {
   }
 
   std::vector<const scene::Object*> build() {
-    if (!order_.empty()) build_node(0, order_.size(), 0);
+    if (!order_.empty()) {
+      nodes_.emplace_back();
+      build_node(0, 0, order_.size(), 0);
+    }
     std::vector<const scene::Object*> leaf_order;
     leaf_order.reserve(order_.size());
     for (uint32_t i : order_) leaf_order.push_back(in_.bounded[i]);
@@ -91,12 +94,12 @@ class Builder {
     return best;
   }
 
-  void build_node(size_t begin, size_t end, int depth) {
-    const size_t index = nodes_.size();
-    nodes_.emplace_back();
+  /// Fills the node at `index` (already allocated); an interior node's two children are allocated side by
+  /// side, so that testing both touches one or two cache lines.
+  void build_node(size_t index, size_t begin, size_t end, int depth) {
     Bounds3 box;
     for (size_t i = begin; i < end; ++i) box.unite(in_.boxes[order_[i]]);
-    nodes_[index].box = box;
+    nodes_[index].box = FloatBox(box);
     const size_t count = end - begin;
     const Split split = count > 1 && depth < kMaxSahDepth ? best_split(begin, end, box) : Split{};
     size_t middle = begin;
@@ -109,17 +112,19 @@ class Builder {
     const bool split_pays = split.axis >= 0 && middle > begin && middle < end;
     if (!split_pays && count <= kMaxLeafObjects) {
       nodes_[index].offset = static_cast<uint32_t>(begin);
-      nodes_[index].count = static_cast<uint16_t>(count);
+      nodes_[index].count = static_cast<uint32_t>(count);
       return;
     }
     if (!split_pays) {
       // Too many objects for a leaf and no useful plane (equal centroids): halve the list.
       middle = begin + count / 2;
     }
-    nodes_[index].axis = static_cast<uint8_t>(std::max(split.axis, 0));
-    build_node(begin, middle, depth + 1);
-    nodes_[index].offset = static_cast<uint32_t>(nodes_.size());
-    build_node(middle, end, depth + 1);
+    const size_t children = nodes_.size();
+    nodes_[index].offset = static_cast<uint32_t>(children);
+    nodes_.emplace_back();
+    nodes_.emplace_back();
+    build_node(children, begin, middle, depth + 1);
+    build_node(children + 1, middle, end, depth + 1);
   }
 
   const IndexedObjects& in_;
@@ -145,32 +150,53 @@ bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::Ray
   bool found = test_all(unbounded_, ray, t_min, t_max, kind, hit);
   if (nodes_.empty() || !(t_min < t_max)) return found;
   const RayBox slabs(ray);
-  const bool negative[3] = {ray.direction.x < 0, ray.direction.y < 0, ray.direction.z < 0};
-  std::array<uint32_t, kStackSize> stack;
+  double root_entry, root_exit;
+  if (!slabs.enter(nodes_[0].box, t_min, t_max, root_entry, root_exit)) return found;
+  // Children are tested from their parent, the nearer walked first and the other kept with its entry t,
+  // so that it is skipped when a hit nearer than that entry has been found meanwhile.
+  struct Pending {
+    uint32_t node;
+    double entry;
+  };
+  std::array<Pending, kStackSize> stack;
   int top = 0;
   uint32_t current = 0;
   for (;;) {
     const Node& node = nodes_[current];
-    if (slabs.hits(node.box, t_min, t_max)) {
-      if (node.count > 0) {
-        for (uint32_t i = node.offset; i < node.offset + node.count; ++i) {
-          if (test_object(*objects_[i], ray, t_min, t_max, kind, hit)) {
-            t_max = hit.t;
-            found = true;
-          }
+    if (node.count > 0) {
+      for (uint32_t i = node.offset; i < node.offset + node.count; ++i) {
+        if (test_object(*objects_[i], ray, t_min, t_max, kind, hit)) {
+          t_max = hit.t;
+          found = true;
         }
-      } else {
-        // The first child holds the low side of the split axis; a ray going down that axis meets the
-        // second child first.
-        const uint32_t first = current + 1, second = node.offset;
-        const bool flip = negative[node.axis];
-        stack[top++] = flip ? first : second;
-        current = flip ? second : first;
+      }
+    } else {
+      uint32_t near = node.offset, far = node.offset + 1;
+      double near_entry, far_entry, exit;
+      bool near_hit = slabs.enter(nodes_[near].box, t_min, t_max, near_entry, exit);
+      bool far_hit = slabs.enter(nodes_[far].box, t_min, t_max, far_entry, exit);
+      if (near_hit && far_hit) {
+        if (far_entry < near_entry) {
+          std::swap(near, far);
+          std::swap(near_entry, far_entry);
+        }
+        stack[top++] = {far, far_entry};
+        current = near;
+        continue;
+      }
+      if (near_hit || far_hit) {
+        current = near_hit ? near : far;
         continue;
       }
     }
-    if (top == 0) break;
-    current = stack[--top];
+    for (;;) {
+      if (top == 0) return found;
+      const Pending p = stack[--top];
+      if (p.entry <= t_max) {
+        current = p.node;
+        break;
+      }
+    }
   }
   return found;
 }

@@ -1,11 +1,12 @@
 #pragma once
 // Own bounding volume hierarchy: binary, built top-down with the surface area heuristic over 16 centroid
-// bins (Wald, "On fast construction of SAH-based bounding volume hierarchies", 2007), walked front to back
-// with a fixed stack. Unbounded objects are tested apart, as in the Embree back end.
+// bins (Wald, "On fast construction of SAH-based bounding volume hierarchies", 2007), walked
+// nearer child first with a fixed stack. Unbounded objects are tested apart, as in the Embree back end.
 #include <cstdint>
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/ray_box.hpp"
 
 namespace snell::accel {
 
@@ -18,13 +19,11 @@ class Bvh final : public Accelerator {
   AcceleratorStats stats() const override { return stats_; }
 
   struct Node {
-    math::Bounds3 box;
-    /// Leaf: first object in `objects_`; interior: index of the second child (the first follows the node).
+    FloatBox box;
+    /// Leaf: first object in `objects_`; interior: index of the first child (the second follows it).
     uint32_t offset = 0;
     /// Objects in a leaf; 0 for an interior node.
-    uint16_t count = 0;
-    /// Split axis of an interior node: the child on the ray's near side along it is walked first.
-    uint8_t axis = 0;
+    uint32_t count = 0;
   };
 
  private:
