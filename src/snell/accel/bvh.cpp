@@ -21,11 +21,22 @@ constexpr double kObjectCost = 4.0;
 // Below this depth only balanced halving: at most 32 more levels for 2^32 objects, so a traversal stack of
 // kStackSize (one entry per level) never overflows.
 constexpr int kMaxSahDepth = 64;
-constexpr int kStackSize = 128;
+constexpr int kMaxBinaryDepth = kMaxSahDepth + 32;
+// A walk pops one node and pushes at most four children per level.
+constexpr int kStackSize = 3 * kMaxBinaryDepth + 4;
+
+/// The binary tree the builder makes before it is collapsed to Bvh::Node.
+struct BinaryNode {
+  Bounds3 box;
+  /// Leaf: first object; interior: index of the first child (the second follows it).
+  uint32_t offset = 0;
+  /// Objects in a leaf; 0 for an interior node.
+  uint32_t count = 0;
+};
 
 class Builder {
  public:
-  Builder(const IndexedObjects& objects, std::vector<Bvh::Node>& nodes) : in_(objects), nodes_(nodes) {
+  Builder(const IndexedObjects& objects, std::vector<BinaryNode>& nodes) : in_(objects), nodes_(nodes) {
     order_.resize(objects.bounded.size());
     std::iota(order_.begin(), order_.end(), 0u);
     centroids_.reserve(order_.size());
@@ -99,7 +110,7 @@ class Builder {
   void build_node(size_t index, size_t begin, size_t end, int depth) {
     Bounds3 box;
     for (size_t i = begin; i < end; ++i) box.unite(in_.boxes[order_[i]]);
-    nodes_[index].box = FloatBox(box);
+    nodes_[index].box = box;
     const size_t count = end - begin;
     const Split split = count > 1 && depth < kMaxSahDepth ? best_split(begin, end, box) : Split{};
     size_t middle = begin;
@@ -128,18 +139,63 @@ class Builder {
   }
 
   const IndexedObjects& in_;
-  std::vector<Bvh::Node>& nodes_;
+  std::vector<BinaryNode>& nodes_;
   std::vector<uint32_t> order_;
   std::vector<math::Vec3> centroids_;
 };
+
+/// Appends the four-wide node for binary interior node `b` (and, first, its subtrees); returns its index.
+uint32_t collapse(const std::vector<BinaryNode>& binary, uint32_t b, std::vector<Bvh::Node>& wide) {
+  std::array<uint32_t, 4> members{binary[b].offset, binary[b].offset + 1, 0, 0};
+  int n = 2;
+  while (n < 4) {
+    int open = -1;
+    double largest = -1;
+    for (int k = 0; k < n; ++k) {
+      const BinaryNode& m = binary[members[k]];
+      if (m.count == 0 && m.box.surface_area() > largest) {
+        largest = m.box.surface_area();
+        open = k;
+      }
+    }
+    if (open < 0) break;
+    const uint32_t opened = members[open];
+    members[open] = binary[opened].offset;
+    members[n++] = binary[opened].offset + 1;
+  }
+  const auto index = static_cast<uint32_t>(wide.size());
+  wide.emplace_back();
+  Bvh::Node node{};
+  for (int k = 0; k < 4; ++k) {
+    const FloatBox box = k < n ? FloatBox(binary[members[k]].box) : FloatBox();
+    for (int a = 0; a < 3; ++a) {
+      node.lo[a][k] = box.lo[a];
+      node.hi[a][k] = box.hi[a];
+    }
+    node.child[k] = Bvh::kNoChild;
+    node.count[k] = 0;
+    if (k >= n) continue;
+    const BinaryNode& m = binary[members[k]];
+    node.child[k] = m.count > 0 ? m.offset : collapse(binary, members[k], wide);
+    node.count[k] = m.count;
+  }
+  wide[index] = node;  // after the recursion, which may have moved `wide`
+  return index;
+}
 
 }  // namespace
 
 Bvh::Bvh(const scene::Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   const IndexedObjects indexed(scene);
-  objects_ = Builder(indexed, nodes_).build();
+  std::vector<BinaryNode> binary;
+  objects_ = Builder(indexed, binary).build();
   unbounded_ = indexed.unbounded;
+  if (!binary.empty()) {
+    root_box_ = FloatBox(binary[0].box);
+    root_ = binary[0].count > 0 ? Pending{binary[0].offset, binary[0].count, 0}
+                                : Pending{collapse(binary, 0, nodes_), 0, 0};
+  }
   nodes_.shrink_to_fit();
   stats_ = structure_stats(scene.objects.size(), unbounded_.size(), nodes_.size(),
                            nodes_.size() * sizeof(Node) + objects_.size() * sizeof(objects_[0]), start);
@@ -148,55 +204,55 @@ Bvh::Bvh(const scene::Scene& scene) {
 bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
                     scene::SurfaceHit& hit) const {
   bool found = test_all(unbounded_, ray, t_min, t_max, kind, hit);
-  if (nodes_.empty() || !(t_min < t_max)) return found;
+  if (objects_.empty() || !(t_min < t_max)) return found;
   const RayBox slabs(ray);
-  double root_entry, root_exit;
-  if (!slabs.enter(nodes_[0].box, t_min, t_max, root_entry, root_exit)) return found;
-  // Children are tested from their parent, the nearer walked first and the other kept with its entry t,
-  // so that it is skipped when a hit nearer than that entry has been found meanwhile.
-  struct Pending {
-    uint32_t node;
-    double entry;
-  };
+  double exit;
   std::array<Pending, kStackSize> stack;
   int top = 0;
-  uint32_t current = 0;
-  for (;;) {
-    const Node& node = nodes_[current];
-    if (node.count > 0) {
-      for (uint32_t i = node.offset; i < node.offset + node.count; ++i) {
+  stack[top] = root_;
+  if (!slabs.enter(root_box_, t_min, t_max, stack[top].entry, exit)) return found;
+  ++top;
+  // Children hit are pushed farthest first, so the nearest is walked next; a pending child is skipped
+  // when a hit nearer than its entry has been found meanwhile.
+  while (top > 0) {
+    const Pending p = stack[--top];
+    if (p.entry > t_max) continue;
+    if (p.count > 0) {
+      for (uint32_t i = p.index; i < p.index + p.count; ++i) {
         if (test_object(*objects_[i], ray, t_min, t_max, kind, hit)) {
           t_max = hit.t;
           found = true;
         }
       }
-    } else {
-      uint32_t near = node.offset, far = node.offset + 1;
-      double near_entry, far_entry, exit;
-      bool near_hit = slabs.enter(nodes_[near].box, t_min, t_max, near_entry, exit);
-      bool far_hit = slabs.enter(nodes_[far].box, t_min, t_max, far_entry, exit);
-      if (near_hit && far_hit) {
-        if (far_entry < near_entry) {
-          std::swap(near, far);
-          std::swap(near_entry, far_entry);
-        }
-        stack[top++] = {far, far_entry};
-        current = near;
-        continue;
-      }
-      if (near_hit || far_hit) {
-        current = near_hit ? near : far;
-        continue;
+      continue;
+    }
+    const Node& node = nodes_[p.index];
+    // The four slab tests in straight loops over the children, which the compiler turns into SIMD.
+    std::array<double, 4> near_t, far_t;
+    near_t.fill(t_min);
+    far_t.fill(t_max);
+    for (int a = 0; a < 3; ++a) {
+      const float* near_plane = slabs.negative(a) ? node.hi[a] : node.lo[a];
+      const float* far_plane = slabs.negative(a) ? node.lo[a] : node.hi[a];
+      const double origin = slabs.origin()[a], inverse = slabs.inverse()[a];
+      for (int k = 0; k < 4; ++k) {
+        const double tn = (near_plane[k] - origin) * inverse;
+        const double tf = (far_plane[k] - origin) * inverse;
+        near_t[k] = tn > near_t[k] ? tn : near_t[k];  // NaN (0 * inf) is ignored, as in RayBox::enter
+        far_t[k] = tf < far_t[k] ? tf : far_t[k];
       }
     }
-    for (;;) {
-      if (top == 0) return found;
-      const Pending p = stack[--top];
-      if (p.entry <= t_max) {
-        current = p.node;
-        break;
-      }
+    std::array<Pending, 4> hits;
+    int n = 0;
+    for (int k = 0; k < 4; ++k) {
+      double entry;
+      if (node.child[k] == kNoChild || !RayBox::widened_overlap(near_t[k], far_t[k], entry)) continue;
+      // Insertion by decreasing entry.
+      int j = n++;
+      for (; j > 0 && hits[j - 1].entry < entry; --j) hits[j] = hits[j - 1];
+      hits[j] = {node.child[k], node.count[k], entry};
     }
+    for (int k = 0; k < n; ++k) stack[top++] = hits[k];
   }
   return found;
 }

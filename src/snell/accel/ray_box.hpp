@@ -46,8 +46,14 @@ class RayBox {
     return enter(box, t0, t1, entry, exit);
   }
   bool negative(int axis) const { return negative_[axis]; }
+  const math::Vec3& origin() const { return origin_; }
+  const math::Vec3& inverse() const { return inverse_; }
+  /// The 1e-12 relative widening of `enter`, for callers that run the slab arithmetic themselves.
+  static bool widened_overlap(double t0, double t1, double& entry) {
+    entry = t0 - std::abs(t0) * 1e-12;
+    return entry <= t1 + std::abs(t1) * 1e-12;
+  }
 
- private:
   bool enter(double lo_x, double lo_y, double lo_z, double hi_x, double hi_y, double hi_z, double t0,
              double t1, double& entry, double& exit) const {
     // The near plane of each slab is known from the direction's sign, so no swap is needed. NaN (0 * inf:
@@ -67,6 +73,7 @@ class RayBox {
     return entry <= exit;
   }
 
+ private:
   math::Vec3 origin_;
   math::Vec3 inverse_;
   bool negative_[3];
