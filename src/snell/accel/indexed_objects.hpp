@@ -15,15 +15,14 @@ namespace snell::accel {
 /// The box an accelerator culls `object` by: its world bounds, cut down to its `bounded_by` box.
 math::Bounds3 culling_bounds(const scene::Object& object);
 
-/// Tests one object: hidden from `kind`, or a ray missing its `bounded_by` box, means no hit (POV-Ray
-/// reference, "Bounded_By": the bounding object is tested first and the object only when it is hit).
+/// Tests one object: hidden from `kind` means no hit. With a `bounded_by` box only the part of the ray
+/// inside the box is tested: a ray missing the box never reaches the object (POV-Ray reference,
+/// "Bounded_By"), and a bound smaller than the object (which POV-Ray leaves unspecified) cuts it to the
+/// box, the same for every accelerator, so that culling by the box is exact.
 inline bool test_object(const scene::Object& object, const math::Ray& ray, double t_min, double t_max,
                         scene::RayKind kind, scene::SurfaceHit& hit) {
   if (!object.visible_to(kind)) return false;
-  if (object.bounded_by) {
-    double t0 = t_min, t1 = t_max;
-    if (!object.bounded_by->clip(ray, t0, t1)) return false;
-  }
+  if (object.bounded_by && !object.bounded_by->clip(ray, t_min, t_max)) return false;
   return object.intersect(ray, t_min, t_max, hit);
 }
 
