@@ -5,6 +5,7 @@
 #include <chrono>
 #include <numeric>
 
+#include "snell/accel/four_boxes.hpp"
 #include "snell/accel/indexed_objects.hpp"
 #include "snell/accel/ray_box.hpp"
 
@@ -227,21 +228,8 @@ bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::Ray
       continue;
     }
     const Node& node = nodes_[p.index];
-    // The four slab tests in straight loops over the children, which the compiler turns into SIMD.
     std::array<double, 4> near_t, far_t;
-    near_t.fill(t_min);
-    far_t.fill(t_max);
-    for (int a = 0; a < 3; ++a) {
-      const float* near_plane = slabs.negative(a) ? node.hi[a] : node.lo[a];
-      const float* far_plane = slabs.negative(a) ? node.lo[a] : node.hi[a];
-      const double origin = slabs.origin()[a], inverse = slabs.inverse()[a];
-      for (int k = 0; k < 4; ++k) {
-        const double tn = (near_plane[k] - origin) * inverse;
-        const double tf = (far_plane[k] - origin) * inverse;
-        near_t[k] = tn > near_t[k] ? tn : near_t[k];  // NaN (0 * inf) is ignored, as in RayBox::enter
-        far_t[k] = tf < far_t[k] ? tf : far_t[k];
-      }
-    }
+    four_slab_tests(slabs, node.lo, node.hi, t_min, t_max, near_t, far_t);
     std::array<Pending, 4> hits;
     int n = 0;
     for (int k = 0; k < 4; ++k) {
