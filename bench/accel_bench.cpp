@@ -1,6 +1,6 @@
 // Rays per second of each accelerator on random sphere scenes. Two ray sets bracket what a render sees:
 // coherent primary-like rays (a pinhole camera's grid) and incoherent rays (random origins and directions,
-// like diffuse bounces). Run: build/bench/snell_bench --benchmark_filter=...
+// like diffuse bounces). Run: build/bench/snell_bench --benchmark_filter='random/10000'
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -73,23 +73,17 @@ void run(benchmark::State& state, const char* kind, bool coherent) {
   state.counters["build_ms"] = accel->stats().build_seconds * 1e3;
 }
 
-void BM_EmbreePrimary(benchmark::State& state) {
-  run(state, "embree", true);
-}
-void BM_EmbreeRandom(benchmark::State& state) {
-  run(state, "embree", false);
-}
-void BM_BrutePrimary(benchmark::State& state) {
-  run(state, "none", true);
-}
-void BM_BruteRandom(benchmark::State& state) {
-  run(state, "none", false);
-}
-
-BENCHMARK(BM_EmbreePrimary)->RangeMultiplier(10)->Range(10, 100000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_EmbreeRandom)->RangeMultiplier(10)->Range(10, 100000)->Unit(benchmark::kMillisecond);
-// Brute force is O(objects) per ray; stop before it takes minutes.
-BENCHMARK(BM_BrutePrimary)->RangeMultiplier(10)->Range(10, 1000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_BruteRandom)->RangeMultiplier(10)->Range(10, 1000)->Unit(benchmark::kMillisecond);
+// Embree, the own structures and brute force on the same scenes and rays (1 thread). Brute force is
+// O(objects) per ray: it stops at 1000 objects before it takes minutes.
+BENCHMARK_CAPTURE(run, embree_primary, "embree", true)->RangeMultiplier(10)->Range(10, 100000);
+BENCHMARK_CAPTURE(run, embree_random, "embree", false)->RangeMultiplier(10)->Range(10, 100000);
+BENCHMARK_CAPTURE(run, bvh_primary, "bvh", true)->RangeMultiplier(10)->Range(10, 100000);
+BENCHMARK_CAPTURE(run, bvh_random, "bvh", false)->RangeMultiplier(10)->Range(10, 100000);
+BENCHMARK_CAPTURE(run, octree_primary, "octree", true)->RangeMultiplier(10)->Range(10, 100000);
+BENCHMARK_CAPTURE(run, octree_random, "octree", false)->RangeMultiplier(10)->Range(10, 100000);
+BENCHMARK_CAPTURE(run, grid_primary, "grid", true)->RangeMultiplier(10)->Range(10, 100000);
+BENCHMARK_CAPTURE(run, grid_random, "grid", false)->RangeMultiplier(10)->Range(10, 100000);
+BENCHMARK_CAPTURE(run, brute_primary, "none", true)->RangeMultiplier(10)->Range(10, 1000);
+BENCHMARK_CAPTURE(run, brute_random, "none", false)->RangeMultiplier(10)->Range(10, 1000);
 
 }  // namespace

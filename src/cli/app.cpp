@@ -92,7 +92,8 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
                      "supersampling depth: depth^2 extra rays (POV-Ray +R, default 3)");
   render->add_flag("--jitter", o.jitter, "jitter supersamples (POV-Ray +J)");
   render->add_option("--threads", o.threads, "render threads (default: all cores)");
-  render->add_option("--accel", accel, "ray accelerator: embree or none (default: embree when built)");
+  render->add_option("--accel", accel,
+                     "ray accelerator: embree, bvh, octree, grid or none (default: embree when built)");
   render->add_option("--bits", o.bits, "PNG bit depth: 8 or 16");
   render->add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   render->add_flag("--quiet", o.quiet, "no progress, warnings or statistics");
@@ -248,6 +249,12 @@ int render(CliOptions& o) {
                "  time: parse {:.3f}s, build {:.3f}s ({}), render {:.3f}s, write {:.3f}s\n",
                o.width, o.height, o.output.string(), r.camera, r.reflected, r.refracted, r.shadow, r.total(),
                result.supersampled_pixels, parse_s, build_s, accelerator->name(), render_s, write_s);
+  }
+  if (o.stats) {
+    const accel::AcceleratorStats a = accelerator->stats();
+    fmt::print(stderr, "  accel: {} objects ({} unbounded), {} nodes, {:.1f} KiB, built in {:.3f}s\n",
+               a.objects, a.unbounded_objects, a.nodes, static_cast<double>(a.memory_bytes) / 1024,
+               a.build_seconds);
   }
   if (result.cancelled) {
     fmt::print(stderr,

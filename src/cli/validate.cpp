@@ -20,8 +20,9 @@ void validate(CliOptions& o) {
   if (o.threads < 0) throw UsageError("thread count must not be negative");
   if (o.checkpoint_seconds < 0) throw UsageError("checkpoint interval must not be negative");
   if (o.bits != 8 && o.bits != 16) throw UsageError("bit depth must be 8 or 16");
-  if (o.accel != "auto" && o.accel != "embree" && o.accel != "none")
-    throw UsageError("unknown accelerator '" + o.accel + "' (expected embree or none)");
+  if (o.accel != "auto" && o.accel != "embree" && o.accel != "bvh" && o.accel != "octree" &&
+      o.accel != "grid" && o.accel != "none")
+    throw UsageError("unknown accelerator '" + o.accel + "' (expected embree, bvh, octree, grid or none)");
   std::error_code ec;
   if (!fs::exists(o.input, ec)) throw UsageError("scene file '" + o.input.string() + "' does not exist");
   if (fs::is_directory(o.input, ec)) throw UsageError("scene file '" + o.input.string() + "' is a folder");

@@ -1,6 +1,6 @@
 #pragma once
-// Ray queries over the whole scene. Back ends: Embree (default), brute force; own BVH, octree and grid
-// come with the speed issue. Unbounded objects (planes) are tested apart from the structure.
+// Ray queries over the whole scene. Back ends: Embree (default), an own SAH BVH, an octree, a uniform grid
+// and brute force. Unbounded objects (planes) are tested apart from the structure.
 #include <memory>
 #include <string>
 #include <string_view>
@@ -13,6 +13,9 @@ struct AcceleratorStats {
   size_t objects = 0;
   size_t unbounded_objects = 0;
   double build_seconds = 0;
+  /// Nodes (grid: cells) and bytes of the structure; 0 where not known (Embree, brute force).
+  size_t nodes = 0;
+  size_t memory_bytes = 0;
 };
 
 class Accelerator {
@@ -25,7 +28,8 @@ class Accelerator {
   virtual AcceleratorStats stats() const = 0;
 };
 
-/// `kind` is "embree" or "none" (brute force). Throws std::invalid_argument for unknown kinds.
+/// `kind` is "embree", "bvh", "octree", "grid" or "none" (brute force). Throws std::invalid_argument for
+/// unknown kinds.
 std::unique_ptr<Accelerator> make_accelerator(std::string_view kind, const scene::Scene& scene);
 
 }  // namespace snell::accel

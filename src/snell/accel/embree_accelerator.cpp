@@ -2,6 +2,8 @@
 
 #include <embree3/rtcore.h>
 
+#include "snell/accel/indexed_objects.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -82,7 +84,7 @@ struct EmbreeAccelerator::Impl {
 
   static void bounds(const RTCBoundsFunctionArguments* args) {
     const auto* self = static_cast<const Impl*>(args->geometryUserPtr);
-    const Bounds3 b = self->bounded[args->primID]->world_bounds();
+    const Bounds3 b = culling_bounds(*self->bounded[args->primID]);
     RTCBounds* out = args->bounds_o;
     out->lower_x = round_down(b.lo.x - self->pad);
     out->lower_y = round_down(b.lo.y - self->pad);
@@ -97,8 +99,7 @@ struct EmbreeAccelerator::Impl {
     auto* q = reinterpret_cast<QueryContext*>(args->context);
     const auto* self = static_cast<const Impl*>(args->geometryUserPtr);
     const scene::Object* object = self->bounded[args->primID];
-    if (!object->visible_to(q->kind)) return;
-    if (!object->intersect(*q->ray, q->t_min, q->t_max, *q->hit)) return;
+    if (!test_object(*object, *q->ray, q->t_min, q->t_max, q->kind, *q->hit)) return;
     q->t_max = q->hit->t;
     q->found = true;
     // Shrink Embree's float tfar so it culls boxes beyond the hit, conservatively: a box can be entered up
@@ -117,7 +118,7 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
   Impl& s = *impl_;
 
   for (const auto& o : scene.objects) {
-    const Bounds3 b = o->world_bounds();
+    const Bounds3 b = culling_bounds(*o);
     // Planes, and objects a transform makes unbounded or whose bounds are NaN/empty, are tested directly.
     // So are boxes beyond Embree's valid float range (|x| < 1.844e18, FLT_LARGE in Embree's sources): its
     // builder silently drops primitives with bounds outside it.
@@ -173,26 +174,14 @@ EmbreeAccelerator::~EmbreeAccelerator() = default;
 bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, scene::RayKind kind,
                                   scene::SurfaceHit& hit) const {
   const Impl& s = *impl_;
-  bool found = false;
-  for (const scene::Object* o : s.unbounded) {
-    if (o->visible_to(kind) && o->intersect(ray, t_min, t_max, hit)) {
-      t_max = hit.t;
-      found = true;
-    }
-  }
+  bool found = test_all(s.unbounded, ray, t_min, t_max, kind, hit);
   // An empty or NaN window (caught by the negated test) has no hits; Embree must not see NaN rays.
   if (s.bounded.empty() || !(t_min < t_max)) return found;
 
   const double length = math::length(ray.direction);
   if (!(length > 0) || !std::isfinite(length) || !math::is_finite(ray.origin)) {
     // Nothing Embree can walk; fall back to testing every object, still in double precision.
-    for (const scene::Object* o : s.bounded) {
-      if (o->visible_to(kind) && o->intersect(ray, t_min, t_max, hit)) {
-        t_max = hit.t;
-        found = true;
-      }
-    }
-    return found;
+    return test_all(s.bounded, ray, t_min, t_max, kind, hit) || found;
   }
 
   // Start the float ray where the double ray enters the scene box, not at the (possibly distant) camera:

@@ -2,6 +2,7 @@
 // An Object is what the scene holds and the accelerator indexes: a shape in its own space, the transform
 // that places it, its texture and interior, and POV-Ray's object flags.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,9 @@ struct Object {
   /// Null means the default interior (ior 1).
   std::shared_ptr<const material::Interior> interior;
   ObjectFlags flags;
+  /// World box of the object's `bounded_by` objects, if it has any: accelerators test the object only for
+  /// rays that hit this box.
+  std::optional<math::Bounds3> bounded_by;
   /// The `#declare` name the object came from, if any; and where it was written.
   std::string name;
   SourceLocation where;

@@ -497,7 +497,7 @@ void Parser::parse_object_modifiers(ParsedObject& object) {
 void Parser::parse_clip_block(ParsedObject& o, const Token& keyword) {
   // clipped_by { objects } or bounded_by { objects }; `clipped_by { bounded_by }` and
   // `bounded_by { clipped_by }` reuse the other list (POV-Ray 3.7 reference, "Clipped_By", "Bounded_By").
-  // Bounds are only an optimisation hint in POV-Ray, so bounded_by objects are checked and dropped.
+  // bounded_by objects become a culling box for the accelerators (see parsed_object.cpp).
   const bool clip = keyword.text == "clipped_by";
   expect("{", keyword.text.c_str());
   const Token first = peek();

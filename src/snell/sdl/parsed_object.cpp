@@ -45,6 +45,8 @@ struct Inherited {
   InteriorPtr interior;
   scene::ObjectFlags flags;
   std::string name;
+  /// World box of the `bounded_by` objects of this object and its ancestors, if any.
+  std::optional<math::Bounds3> bounded_by;
 };
 
 /// The object's own values resolved against its parent's.
@@ -62,6 +64,7 @@ Inherited resolve(const ParsedObject& o, const Inherited& parent) {
   r.interior = o.interior ? material::Interior::transformed(o.interior, parent.to_world) : parent.interior;
   r.flags = merge(o.flags, parent.flags);
   r.name = o.name.empty() ? parent.name : o.name;
+  r.bounded_by = parent.bounded_by;
   return r;
 }
 
@@ -91,13 +94,30 @@ std::shared_ptr<scene::Object> make_object(const ParsedObject& o, const Inherite
   object->flags = own.flags;
   object->name = own.name;
   object->where = o.where;
+  object->bounded_by = own.bounded_by;
   return object;
+}
+
+ObjectPtr build(const ParsedObject& o, const Inherited& parent, std::vector<scene::Light>& lights);
+
+/// Narrows `own.bounded_by` to the box of `o`'s bounded_by objects; a ray must hit every one of them
+/// (POV-Ray reference, "Bounded_By"), so their boxes intersect. Their lights and flags play no part.
+void add_user_bounds(const ParsedObject& o, Inherited& own) {
+  if (o.bounded_by.empty()) return;
+  math::Bounds3 box = own.bounded_by.value_or(math::Bounds3::infinite());
+  Inherited space = own;
+  space.flags = {};
+  std::vector<scene::Light> ignored;
+  for (const auto& bound : o.bounded_by)
+    if (ObjectPtr built = build(bound, space, ignored)) box = box.intersection(built->world_bounds());
+  own.bounded_by = box;
 }
 
 /// One scene object for `o` and everything under it (a CSG object for unions and CSG), or null when
 /// it holds only lights.
 ObjectPtr build(const ParsedObject& o, const Inherited& parent, std::vector<scene::Light>& lights) {
-  const Inherited own = resolve(o, parent);
+  Inherited own = resolve(o, parent);
+  add_user_bounds(o, own);
   if (o.light) add_light(o, own.to_world, lights);
 
   std::shared_ptr<scene::Object> object;
@@ -150,7 +170,8 @@ void flatten_into(const ParsedObject& o, const Inherited& parent, std::vector<Ob
     if (ObjectPtr object = build(o, parent, lights)) objects.push_back(std::move(object));
     return;
   }
-  const Inherited own = resolve(o, parent);
+  Inherited own = resolve(o, parent);
+  add_user_bounds(o, own);
   if (o.light) add_light(o, own.to_world, lights);
   for (const auto& child : o.children) flatten_into(child, own, objects, lights);
 }

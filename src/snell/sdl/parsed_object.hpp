@@ -25,7 +25,7 @@ struct ParsedObject {
   Combine combine = Combine::union_of;
   /// `clipped_by` objects, in this object's own space (before `transform`).
   std::vector<ParsedObject> clipped_by;
-  /// `bounded_by` objects, in its own space: kept only for `clipped_by { bounded_by }`.
+  /// `bounded_by` objects, in its own space: their box culls rays (accel), and `clipped_by { bounded_by }`.
   std::vector<ParsedObject> bounded_by;
   /// Object space -> parent space.
   math::Transform transform;
