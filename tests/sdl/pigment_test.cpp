@@ -41,6 +41,13 @@ TEST(SdlPigment, CheckerWithOneColourKeepsTheSecondDefault) {
   expect_rgb(color_at(scene, {1.5, 0.5, 0.5}), 0, 1, 0);
 }
 
+TEST(SdlPigment, SecondRgbKeywordStartsTheNextColour) {
+  // POV-Ray's Parse_Colour ends a colour at an rgb keyword once it has begun (parser_expressions.cpp).
+  const std::string scene = "plane { y, 0 pigment { checker rgb 1 rgb 0.5 } }";
+  expect_rgb(color_at(scene, {0.5, 0.5, 0.5}), 1, 1, 1);
+  expect_rgb(color_at(scene, {1.5, 0.5, 0.5}), 0.5, 0.5, 0.5);
+}
+
 TEST(SdlPigment, CheckerOfPigmentsAndScale) {
   const std::string scene = R"(
     plane { y, 0 pigment { checker pigment { rgb 1 }, pigment { gradient x } scale 2 } })";

@@ -580,6 +580,9 @@ Numeric Parser::parse_color_keywords() {
       channels = 4;
     else if (w == "rgbft")
       channels = 5;
+    // An rgb* keyword once the colour has begun starts the next colour, as in POV-Ray's Parse_Colour:
+    // `checker rgb 1 rgb 0.5` is two colours.
+    if (channels > 0 && any) return c;
     if (channels > 0) {
       raw_next();
       const Numeric e = parse_numeric();
