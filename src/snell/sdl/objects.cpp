@@ -28,7 +28,7 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   if (t.kind != Token::Kind::identifier) return std::nullopt;
   const std::string& w = t.text;
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
-      w == "blob" || w == "mesh" || w == "light_source" || w == "object" || w == "isosurface" ||
+      w == "blob" || w == "mesh" || w == "mesh2" || w == "light_source" || w == "object" || w == "isosurface" ||
       w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" || w == "julia_fractal") {
     raw_next();
     return parse_object(t);
@@ -41,7 +41,7 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
       return o;
     }
   }
-  if (w == "mesh2" || w == "parametric" || w == "lemon" || w == "ovus")
+  if (w == "parametric" || w == "lemon" || w == "ovus")
     fail(t.where, "the object '" + w + "' is not supported yet");
   return std::nullopt;
 }
@@ -58,6 +58,8 @@ ParsedObject Parser::parse_object(const Token& keyword) {
     o = parse_blob(keyword);
   } else if (w == "mesh") {
     o = parse_mesh(keyword);
+  } else if (w == "mesh2") {
+    o = parse_mesh2(keyword);
   } else if (w == "light_source") {
     o = parse_light(keyword);
   } else if (w == "isosurface") {

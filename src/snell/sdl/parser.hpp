@@ -281,6 +281,12 @@ class Parser {
   ParsedObject parse_union(const Token& keyword);
   ParsedObject parse_blob(const Token& keyword);
   ParsedObject parse_mesh(const Token& keyword);
+  // ---- mesh2 (mesh2.cpp) ----
+  ParsedObject parse_mesh2(const Token& keyword);
+  int parse_mesh2_count(const char* list);
+  void end_mesh2_list(const char* list, int count, size_t read);
+  std::vector<std::array<int, 3>> parse_mesh2_indices(const char* list, size_t limit,
+                                                      std::vector<int>* textures);
   // ---- poly, polygon, prism, lathe, sor, text (outline_shapes.cpp) ----
   /// The shape's parameters after `keyword {`, up to its modifiers.
   std::shared_ptr<const geometry::Shape> parse_outline_shape(const Token& keyword);
