@@ -153,13 +153,7 @@ ParsedObject Parser::parse_mesh2(const Token& keyword) {
   if (data.uv_indices.empty() && !data.uvs.empty() && data.uvs.size() != data.vertices.size())
     data.uvs.clear();            // POV-Ray ignores uv_vectors it cannot pair with the vertices
   data.texture_indices.clear();  // per-face textures: see the warning above
-  try {
-    o.shape = shapes::mesh(std::move(data));
-  } catch (const std::exception& e) {
-    fail(keyword.where, e.what());
-  }
-  parse_object_modifiers(o);
-  return o;
+  return finish_shape(std::move(o), keyword, [&] { return shapes::mesh(std::move(data)); });
 }
 
 }  // namespace snell::sdl

@@ -360,13 +360,7 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
     }
   }
   if (data.faces.empty()) fail(keyword.where, "mesh has no triangles");
-  try {
-    o.shape = shapes::mesh(std::move(data));
-  } catch (const std::exception& e) {
-    fail(keyword.where, e.what());
-  }
-  parse_object_modifiers(o);
-  return o;
+  return finish_shape(std::move(o), keyword, [&] { return shapes::mesh(std::move(data)); });
 }
 
 ParsedObject Parser::parse_light(const Token& keyword) {
