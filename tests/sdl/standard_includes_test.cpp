@@ -17,16 +17,6 @@ const std::set<std::string> kNeedColorsAndShapes = {"shapes2.inc", "shapesq.inc"
                                                     "stdcam.inc",  "stoneold.inc", "stones.inc",
                                                     "stones1.inc", "stones2.inc"};
 
-/// Includes that still stop on a feature snell lacks. Remove a name once its gap is closed: the test then
-/// holds it to parsing.
-const std::set<std::string> kKnownGaps = {
-    "logo.inc",     // prism
-    "shapesq.inc",  // quartic
-    "skies.inc",    // wrinkles pattern
-    "stones.inc",   // crackle pattern (stones2.inc)
-    "stones2.inc",  // crackle pattern
-};
-
 TEST(StandardIncludes, EachParsesWhenIncludedAlone) {
   const std::filesystem::path folder = POVRAY_INCLUDE_DIR;
   if (!std::filesystem::is_directory(folder)) GTEST_SKIP() << "Debian's povray-includes is not installed";
@@ -41,11 +31,9 @@ TEST(StandardIncludes, EachParsesWhenIncludedAlone) {
         kNeedColorsAndShapes.count(name) ? "#include \"colors.inc\"\n#include \"shapes.inc\"\n" : "";
     const std::string error = test::error_of(prelude + "#include \"" + name + "\"\n");
     parsed += error.empty();
-    if (kKnownGaps.count(name))
-      std::printf("known gap: %s: %s\n", name.c_str(), error.substr(0, error.find('\n')).c_str());
-    else
-      EXPECT_EQ(error, "") << name;
+    EXPECT_EQ(error, "") << name;
   }
+  EXPECT_EQ(parsed, static_cast<int>(names.size()));
   std::printf(
       "%d of %zu standard includes parse (alone, or after colors.inc and shapes.inc where POV-Ray needs "
       "them)\n",
