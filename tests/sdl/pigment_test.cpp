@@ -48,6 +48,17 @@ TEST(SdlPigment, SecondRgbKeywordStartsTheNextColour) {
   expect_rgb(color_at(scene, {1.5, 0.5, 0.5}), 0.5, 0.5, 0.5);
 }
 
+TEST(SdlPigment, AverageIsTheWeightedMeanOfItsMap) {
+  // POV-Ray reference, "Average": weights need not sum to 1; the result is the same at every point.
+  const std::string scene =
+      "plane { y, 0 pigment { average pigment_map { [1 rgb <1, 0, 0>] [3 pigment { checker rgb z rgb z }] } "
+      "} }";
+  expect_rgb(color_at(scene, {0.5, 0.5, 0.5}), 0.25, 0, 0.75);
+  expect_rgb(color_at(scene, {7.5, -3.5, 2.5}), 0.25, 0, 0.75);
+  EXPECT_NE(sdl::test::error_of("plane { y, 0 pigment { average } }").find("average needs a pigment_map"),
+            std::string::npos);
+}
+
 TEST(SdlPigment, CheckerOfPigmentsAndScale) {
   const std::string scene = R"(
     plane { y, 0 pigment { checker pigment { rgb 1 }, pigment { gradient x } scale 2 } })";

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "snell/sdl/parser.hpp"
+#include "snell/texture/average_pigment.hpp"
 #include "snell/texture/cellular_patterns.hpp"
 #include "snell/texture/fractal_patterns.hpp"
 #include "snell/texture/noise_patterns.hpp"
@@ -129,7 +130,10 @@ struct Parser::PigmentBuilder {
   }
 
   PigmentPtr build() const {
-    PigmentPtr pigment = patterned ? std::make_shared<texture::PatternPigment>(build_spec()) : plain;
+    // `average` is no lookup: the weighted mean of its pigment_map's entries (average_pigment.hpp).
+    PigmentPtr pigment = special == "average" ? std::make_shared<texture::AveragePigment>(pigment_entries)
+                         : patterned          ? std::make_shared<texture::PatternPigment>(build_spec())
+                                              : plain;
     if (uv_mapping && pigment) pigment = std::make_shared<texture::UvMappedPigment>(pigment);
     return pigment;
   }

@@ -30,9 +30,9 @@ PigmentPtr solid(const material::Rgbft& c) {
 
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
-  static const char* const patterns[] = {
-      "average",    "density_file", "facets", "function", "pavement", "square",    "tiling",
-      "triangular", "object",       "aoi",    "cubic",    "magnet",   "potential", "pigment_pattern"};
+  static const char* const patterns[] = {"density_file", "facets",     "function",       "pavement", "square",
+                                         "tiling",       "triangular", "object",         "aoi",      "cubic",
+                                         "magnet",       "potential",  "pigment_pattern"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -42,12 +42,18 @@ bool is_unsupported_pattern(const std::string& w) {
 
 std::shared_ptr<const material::Pigment> Parser::parse_pigment_block(
     const std::shared_ptr<const material::Pigment>& base) {
-  const NestingGuard guard(*this, peek().where);
+  const scene::SourceLocation where = peek().where;
+  const NestingGuard guard(*this, where);
   expect("{", "pigment");
   PigmentBuilder builder;
   builder.start_from(base);
   parse_pigment_body(builder, "}");
-  const PigmentPtr pigment = builder.build();
+  PigmentPtr pigment;
+  try {
+    pigment = builder.build();
+  } catch (const std::invalid_argument& e) {
+    fail(where, e.what());  // an inconsistent pattern: no map for `average`, a wrong entry count...
+  }
   return pigment ? pigment : solid(material::Rgbft{});
 }
 
@@ -142,7 +148,7 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     value = std::make_shared<texture::DentsPattern>();
   } else if (w == "marble" || w == "wood" || w == "agate" || w == "crackle" || w == "quilted" ||
              w == "ripples" || w == "waves" || w == "spiral1" || w == "spiral2" || w == "mandel" ||
-             w == "julia") {
+             w == "julia" || w == "average") {
     value = std::make_shared<texture::GranitePattern>();  // replaced in build_spec(), with its parameters
     special = w;
   }
