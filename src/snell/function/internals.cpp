@@ -73,7 +73,8 @@ double f_noise3d(const double* a) {  // 76
 double f_noise_generator(const double* a) {  // 78: the generator number (a[3]) picks POV-Ray's variant
   // POV-Ray (vm/fnintern.cpp) keeps the low two bits; 0 ("default") takes the original generator's path.
   const int bits = static_cast<int>(std::clamp(a[3], -1.0e9, 1.0e9)) & 3;
-  const auto generator = bits == 0 ? texture::NoiseGenerator::original : static_cast<texture::NoiseGenerator>(bits);
+  const auto generator =
+      bits == 0 ? texture::NoiseGenerator::original : static_cast<texture::NoiseGenerator>(bits);
   return texture::povray_noise({a[0], a[1], a[2]}, generator);
 }
 
