@@ -134,13 +134,21 @@ TEST(FunctionInternals, EllipsoidAndSuperellipsoid) {
 
 TEST(FunctionInternals, Noise3dStaysInZeroOne) {
   const auto noise = internal_function(76);
-  // Improved Perlin noise vanishes on the integer lattice, so f_noise3d is 0.5 there.
-  EXPECT_DOUBLE_EQ(eval(*noise, {3, -2, 7}), 0.5);
+  // POV-Ray 3.7.0 prints 0.417469580551 for #debug str(f_noise3d(3, -2, 7), 0, 12).
+  EXPECT_NEAR(eval(*noise, {3, -2, 7}), 0.417469580551, 1e-11);
   for (int i = 0; i < 100; ++i) {
     const double v = eval(*noise, {i * 0.37, i * 0.11, -i * 0.23});
     EXPECT_GE(v, 0);
     EXPECT_LE(v, 1);
   }
+}
+
+TEST(FunctionInternals, NoiseGeneratorPicksPovRaysVariant) {
+  // POV-Ray 3.7.0's #debug str(f_noise_generator(0.3, 0.7, 1.1, G), 0, 12): G = 0 takes the original
+  // generator's path (as G = 1 does), G = 3 is Perlin's noise.
+  const auto noise = internal_function(78);
+  EXPECT_NEAR(eval(*noise, {0.3, 0.7, 1.1, 0}), 0.855310987588, 1e-11);
+  EXPECT_NEAR(eval(*noise, {0.3, 0.7, 1.1, 3}), 0.573302353883, 1e-11);
 }
 
 TEST(FunctionInternals, UnimplementedOnesDeclareButCallsNameThem) {

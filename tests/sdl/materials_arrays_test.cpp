@@ -203,6 +203,24 @@ TEST(SdlRandom, SameSeedSameSequenceInUnitInterval) {
   EXPECT_EQ(out[0], "111");
 }
 
+// Values printed by POV-Ray 3.7.0 itself (`povray` on Debian 12) for the same scene with
+// #debug str(rand(S), 0, 12): snell must draw the very same stream.
+TEST(SdlRandom, MatchesPovRaySequence) {
+  const auto out = debug_of(R"(
+    #declare S = seed(0);
+    #debug str(rand(S), 0, 12) #debug str(rand(S), 0, 12) #debug str(rand(S), 0, 12)
+    #declare T = seed(12345);
+    #debug str(rand(T), 0, 12)
+    #declare U = seed(-7.9);
+    #debug str(rand(U), 0, 12))");
+  ASSERT_EQ(out.size(), 5u);
+  EXPECT_EQ(out[0], "0.000002874294");
+  EXPECT_EQ(out[1], "0.466563684509");
+  EXPECT_EQ(out[2], "0.249070228834");
+  EXPECT_EQ(out[3], "0.466563684509");  // seed(0)'s first step leaves the state at 12345
+  EXPECT_EQ(out[4], "0.046072868175");  // seed truncates toward zero: -7
+}
+
 TEST(SdlRandom, RandNeedsASeededStream) {
   EXPECT_NE(sdl::test::error_of("#declare X = rand(3);").find("seed"), std::string::npos);
 }

@@ -26,10 +26,12 @@ TEST(AgatePatternTest, StaysInUnitRange) {
   }
 }
 
-TEST(GranitePatternTest, ZeroOnLatticePointsAndBoundedByOctaveSum) {
-  // Every octave samples the noise at an integer multiple of an integer point, where it vanishes.
+TEST(GranitePatternTest, MatchesPovRayAndBoundedByOctaveSum) {
+  // POV-Ray 3.7.0: #debug str(F(x, y, z).red, 0, 12) with
+  // F = function { pigment { granite color_map {[0 rgb 0][1 rgb 1]} } } (single-precision colours).
   const GranitePattern granite;
-  EXPECT_NEAR(granite.value({1, 2, -3}), 0.0, 1e-12);
+  EXPECT_NEAR(granite.value({0.3, 0.7, 1.1}), 0.244587063789, 1e-7);
+  EXPECT_NEAR(granite.value({1, 2, -3}), 0.254131048918, 1e-7);
   for (int i = 0; i < 100; ++i) {
     const double v = granite.value({i * 0.031, i * 0.017, -i * 0.023});
     EXPECT_GE(v, 0.0);

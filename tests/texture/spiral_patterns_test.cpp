@@ -69,3 +69,11 @@ TEST(NoiseValuePatternsTest, WrinklesDentsRipplesWavesInRange) {
   const Vec3 far{1000, 0, 0};
   EXPECT_NEAR(dense.value(far), dense.value(far + Vec3{1, 0, 0}), 0.02);
 }
+
+TEST(NoiseValuePatternsTest, RipplesMatchPovRay) {
+  // POV-Ray 3.7.0: #debug str(F(x, y, z).red, 0, 12) with
+  // F = function { pigment { ripples color_map {[0 rgb 0][1 rgb 1]} } } (single-precision colours).
+  const RipplesPattern ripples;
+  EXPECT_NEAR(ripples.value({0.3, 0.7, 1.1}), 0.704303383827, 1e-7);
+  EXPECT_NEAR(ripples.value({1.5, -2.25, 0.125}), 0.550564885139, 1e-7);
+}

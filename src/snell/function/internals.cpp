@@ -6,7 +6,7 @@
 #include <string>
 
 #include "snell/math/constants.hpp"
-#include "snell/texture/perlin_noise.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::function {
 
@@ -61,11 +61,9 @@ double f_torus(const double* a) {  // 70: major radius, minor radius; torus in t
   return std::sqrt(ring * ring + a[1] * a[1]) - a[4];
 }
 
-/// POV-Ray's Noise() in about [0, 1]. snell uses Perlin's improved noise mapped to [0, 1] (as its bozo
-/// pattern does) for every noise generator, so values differ pointwise from POV-Ray's lattice noise but
-/// share range, mean and feature size.
+/// POV-Ray's Noise() in [0, 1] with 3.7's default generator (range corrected; texture/povray_noise.hpp).
 double noise01(double x, double y, double z) {
-  return std::clamp(0.5 + 0.5 * texture::improved_perlin_noise(x, y, z), 0.0, 1.0);
+  return texture::povray_noise({x, y, z});
 }
 
 double f_noise3d(const double* a) {  // 76
@@ -73,7 +71,11 @@ double f_noise3d(const double* a) {  // 76
 }
 
 double f_noise_generator(const double* a) {  // 78: the generator number (a[3]) picks POV-Ray's variant
-  return noise01(a[0], a[1], a[2]);
+  // POV-Ray (vm/fnintern.cpp) keeps the low two bits; 0 ("default") takes the original generator's path.
+  const int bits = static_cast<int>(std::clamp(a[3], -1.0e9, 1.0e9)) & 3;
+  const auto generator =
+      bits == 0 ? texture::NoiseGenerator::original : static_cast<texture::NoiseGenerator>(bits);
+  return texture::povray_noise({a[0], a[1], a[2]}, generator);
 }
 
 double f_helix1(const double* a) {  // 25

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "snell/texture/perlin_noise.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::render {
 
@@ -22,7 +22,7 @@ double turbulent_width(const scene::Fog& fog, const Vec3& p, double width) {
   const scene::FogTurbulence& t = *fog.turbulence;
   const Vec3 q{p.x * t.amount.x, p.y * t.amount.y, p.z * t.amount.z};
   const double k = std::exp(-width / fog.distance);
-  const double turb = texture::perlin_turbulence(q, t.octaves, t.lambda, t.omega);
+  const double turb = texture::povray_turbulence(q, t.octaves, t.lambda, t.omega);
   return width * (1.0 - k * std::min(1.0, turb * fog.turb_depth));
 }
 

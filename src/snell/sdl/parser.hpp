@@ -337,8 +337,8 @@ class Parser {
   /// Values of array elements read through inject_array_element, under names no identifier can have.
   std::map<std::string, Value> element_values_;
   unsigned element_counter_ = 0;
-  /// `seed(n)` streams, indexed by the float `seed` returns.
-  std::vector<math::Pcg32> random_streams_;
+  /// `seed(n)` streams (the generator state of each), indexed by the float `seed` returns.
+  std::vector<uint32_t> random_streams_;
   std::vector<std::map<std::string, Value>> scopes_;
   std::map<std::string, UserFile> user_files_;
   size_t bytes_written_ = 0;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "snell/texture/perlin_noise.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::texture {
 
@@ -18,7 +18,7 @@ double cycloidal(double v) {
 double MarblePattern::value(const Vec3& p) const {
   if (!turbulence_) return p.x;
   const TurbulenceParams& t = *turbulence_;
-  return p.x + t.amount.x * perlin_turbulence(p, t.octaves, t.lambda, t.omega);
+  return p.x + t.amount.x * povray_turbulence(p, t.octaves, t.lambda, t.omega);
 }
 
 double WoodPattern::value(const Vec3& p) const {
@@ -34,21 +34,24 @@ double WoodPattern::value(const Vec3& p) const {
 
 double AgatePattern::value(const Vec3& p) const {
   const TurbulenceParams& t = turbulence_;
-  const double turb = agate_turb_ * perlin_turbulence(p, t.octaves, t.lambda, t.omega);
+  const double turb = agate_turb_ * povray_turbulence(p, t.octaves, t.lambda, t.omega);
   const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
   return std::pow(std::clamp(v, 0.0, 1.0), 0.77);
 }
 
 double GranitePattern::value(const Vec3& p) const {
+  // POV-Ray's granite: six octaves of |1 - 2 noise| capped at 0.5 (generators 2 and 3).
   double sum = 0, frequency = 1;
   for (int i = 0; i < 6; ++i, frequency *= 2)
-    sum += 0.5 * std::fabs(improved_perlin_noise(p * (4.0 * frequency))) / frequency;
+    sum += std::min(std::fabs(1.0 - 2.0 * povray_noise(p * (4.0 * frequency))), 0.5) / frequency;
   return sum;
 }
 
 double WrinklesPattern::value(const Vec3& p) const {
+  // POV-Ray's wrinkles: ten octaves of 2 noise - 0.5 clamped to [0, 1] (generators 2 and 3).
   double sum = 0, amplitude = 1, frequency = 1;
-  for (int i = 0; i < 10; ++i, amplitude *= 0.5, frequency *= 2) sum += amplitude * unit_noise(p * frequency);
+  for (int i = 0; i < 10; ++i, amplitude *= 0.5, frequency *= 2)
+    sum += amplitude * std::clamp(2.0 * povray_noise(p * frequency) - 0.5, 0.0, 1.0);
   return sum / 2;
 }
 
@@ -60,7 +63,7 @@ Vec3 WrinklesPattern::bump(const Vec3& p) const {
 }
 
 double BumpsPattern::value(const Vec3& p) const {
-  return unit_noise(p);
+  return povray_noise(p);
 }
 
 Vec3 BumpsPattern::bump(const Vec3& p) const {
@@ -68,7 +71,7 @@ Vec3 BumpsPattern::bump(const Vec3& p) const {
 }
 
 double DentsPattern::value(const Vec3& p) const {
-  const double n = unit_noise(p);
+  const double n = povray_noise(p);
   return n * n * n;
 }
 

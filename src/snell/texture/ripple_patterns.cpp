@@ -1,8 +1,9 @@
 #include "snell/texture/ripple_patterns.hpp"
 
 #include <cmath>
+#include <cstdint>
 
-#include "snell/math/pcg32.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::texture {
 
@@ -37,15 +38,16 @@ WaveSum sum_waves(const Vec3& p, double frequency, double phase, bool own_freque
 }  // namespace
 
 const std::array<WaveSource, 10>& wave_sources() {
+  // POV-Ray's centres and frequencies (core/material/noise.cpp, Initialize_Waves): centre i is the
+  // direction of DNoise at (i, 0, 0); the frequencies come from its LCG started at -560851967, taking
+  // bits 16..30 of each state scaled to [0, 1] plus 0.01.
   static const std::array<WaveSource, 10> sources = [] {
     std::array<WaveSource, 10> s{};
-    math::Pcg32 rng(20261123);
-    for (auto& source : s) {
-      Vec3 v{0, 0, 0};
-      while (dot(v, v) < 1e-4)  // a random direction: uniform in the cube, then normalised
-        v = Vec3{rng.next_double() - 0.5, rng.next_double() - 0.5, rng.next_double() - 0.5};
-      source.centre = normalize(v);
-      source.frequency = 0.01 + rng.next_double();
+    uint32_t state = static_cast<uint32_t>(-560851967);
+    for (size_t i = 0; i < s.size(); ++i) {
+      s[i].centre = normalize(povray_dnoise(Vec3{static_cast<double>(i), 0, 0}));
+      state = state * 1812433253u + 12345u;
+      s[i].frequency = static_cast<double>((state >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
     }
     return s;
   }();

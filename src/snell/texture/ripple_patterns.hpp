@@ -1,7 +1,6 @@
 #pragma once
 // `ripples` and `waves` (POV-Ray 3.7 reference, "ripples", "waves"): circular waves spreading from ten
-// fixed centres near the origin. POV-Ray places its centres with its own random generator; these come
-// from a fixed-seed Pcg32, so the interference is alike in scale but not the same picture.
+// fixed centres near the origin, placed as POV-Ray places them (ripple_patterns.cpp, wave_sources).
 #include <array>
 
 #include "snell/texture/pattern.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "snell/texture/perlin_noise.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::texture {
 
@@ -57,7 +57,7 @@ double LeopardPattern::value(const Vec3& p) const {
 }
 
 double BozoPattern::value(const Vec3& p) const {
-  return unit_noise(p);
+  return povray_noise(p);
 }
 
 }  // namespace snell::texture

@@ -65,8 +65,7 @@ class WarpList {
   std::vector<std::shared_ptr<const Warp>> warps_;
 };
 
-/// Vector-valued fractal noise: each component an octave sum of signed improved noise, sampled at offset
-/// points so the three components are uncorrelated.
+/// Vector-valued fractal noise: POV-Ray's DTurbulence, an octave sum of its DNoise (povray_noise.hpp).
 Vec3 vector_turbulence(const Vec3& p, int octaves, double omega, double lambda);
 /// One octave of the vector noise, each component in about [-1, 1] (POV-Ray's DNoise in role).
 inline Vec3 vector_noise(const Vec3& p) {

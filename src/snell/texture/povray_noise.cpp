@@ -1,0 +1,243 @@
+#include "snell/texture/povray_noise.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace snell::texture {
+
+namespace {
+
+using math::Vec3;
+
+// The 267 random coefficients POV-Ray's lattice noise draws from (data table "RTable" in POV-Ray 3.7's
+// core/material/noise.cpp; POV-Ray also stores each value halved, which value_term below computes).
+constexpr std::array<double, 267> kCoefficients = {
+    -1,        0.604974,   -0.937102, 0.414115,   0.576226,  -0.0161593, 0.432334,  0.103685,   0.590539,
+    0.0286412, 0.46981,    -0.84622,  -0.0734112, -0.304097, -0.40206,   -0.210132, -0.919127,  0.652033,
+    -0.83151,  -0.183948,  -0.671107, 0.852476,   0.043595,  -0.404532,  0.75494,   -0.335653,  0.618433,
+    0.605707,  0.708583,   -0.477195, 0.899474,   0.490623,  0.221729,   -0.400381, -0.853727,  -0.932586,
+    0.659113,  0.961303,   0.325948,  -0.750851,  0.842466,  0.734401,   -0.649866, 0.394491,   -0.466056,
+    -0.434073, 0.109026,   0.0847028, -0.738857,  0.241505,  0.16228,    -0.71426,  -0.883665,  -0.150408,
+    -0.90396,  -0.686549,  -0.785214, 0.488548,   0.0246433, 0.142473,   -0.602136, 0.375845,   -0.00779736,
+    0.498955,  -0.268147,  0.856382,  -0.386007,  -0.596094, -0.867735,  -0.570977, -0.914366,  0.28896,
+    0.672206,  -0.233783,  0.94815,   0.895262,   0.343252,  -0.173388,  -0.767971, -0.314748,  0.824308,
+    -0.342092, 0.721431,   -0.24004,  -0.63653,   0.553277,  0.376272,   0.158984,  -0.452659,  0.396323,
+    -0.420676, -0.454154,  0.122179,  0.295857,   0.0664225, -0.202075,  -0.724788, 0.453513,   0.224567,
+    -0.908812, 0.176349,   -0.320516, -0.697139,  0.742702,  -0.900786,  0.471489,  -0.133532,  0.119127,
+    -0.889769, -0.23183,   -0.669673, -0.046891,  -0.803433, -0.966735,  0.475578,  -0.652644,  0.0112459,
+    -0.730007, 0.128283,   0.145647,  -0.619318,  0.272023,  0.392966,   0.646418,  -0.0207675, -0.315908,
+    0.480797,  0.535668,   -0.250172, -0.83093,   -0.653773, -0.443809,  0.119982,  -0.897642,  0.89453,
+    0.165789,  0.633875,   -0.886839, 0.930877,   -0.537194, 0.587732,   0.722011,  -0.209461,  -0.0424659,
+    -0.814267, -0.919432,  0.280262,  -0.66302,   -0.558099, -0.537469,  -0.598779, 0.929656,   -0.170794,
+    -0.537163, 0.312581,   0.959442,  0.722652,   0.499931,  0.175616,   -0.534874, -0.685115,  0.444999,
+    0.17171,   0.108202,   -0.768704, -0.463828,  0.254231,  0.546014,   0.869474,  0.875212,   -0.944427,
+    0.130724,  -0.110185,  0.312184,  -0.33138,   -0.629206, 0.0606546,  0.722866,  -0.0979477, 0.821561,
+    0.0931258, -0.972808,  0.0318151, -0.867033,  -0.387228, 0.280995,   -0.218189, -0.539178,  -0.427359,
+    -0.602075, 0.311971,   0.277974,  0.773159,   0.592493,  -0.0331884, -0.630854, -0.269947,  0.339132,
+    0.581079,  0.209461,   -0.317433, -0.284993,  0.181323,  0.341634,   0.804959,  -0.229572,  -0.758907,
+    -0.336721, 0.605463,   -0.991272, -0.0188754, -0.300191, 0.368307,   -0.176135, -0.3832,    -0.749569,
+    0.62356,   -0.573938,  0.278309,  -0.971313,  0.839994,  -0.830686,  0.439078,  0.66128,    0.694514,
+    0.0565042, 0.54342,    -0.438804, -0.0228428, -0.687068, 0.857267,   0.301991,  -0.494255,  -0.941039,
+    0.775509,  0.410575,   -0.362081, -0.671534,  -0.348379, 0.932433,   0.886442,  0.868681,   -0.225666,
+    -0.062211, -0.0976425, -0.641444, -0.848112,  0.724697,  0.473503,   0.998749,  0.174701,   0.559625,
+    -0.029099, -0.337392,  -0.958129, -0.659785,  0.236042,  -0.246937,  0.659449,  -0.027512,  0.821897,
+    -0.226215, 0.0181735,  0.500481,  -0.420127,  -0.427878, 0.566186,
+};
+
+/// POV-Ray's table generator (the same LCG as its rand()); its tables take bits 16..30 of the state.
+struct TableRandom {
+  uint32_t state;
+  int next() {
+    state = state * 1812433253u + 12345u;
+    return static_cast<int>((state >> 16) & 0x7FFF);
+  }
+};
+
+/// Shuffled 0..4095, repeated twice so that sums of two entries index it directly (InitTextureTable).
+struct LatticeHash {
+  std::array<uint16_t, 8192> table{};
+  LatticeHash() {
+    for (int i = 0; i < 4096; ++i) table[i] = static_cast<uint16_t>(i);
+    TableRandom random{0};
+    for (int i = 4095; i >= 0; --i) std::swap(table[i], table[random.next() % 4096]);
+    std::copy_n(table.begin(), 4096, table.begin() + 4096);
+  }
+  int pair(int a, int b) const { return table[table[a] ^ b]; }
+  /// Index of the first of four coefficients for a hashed (x, y) column and the z cell.
+  int coefficient(int xy_hash, int z) const { return table[xy_hash ^ z] & 0xFF; }
+};
+
+/// Perlin's 1985 gradient tables: 2048 unit gradients and a permutation, each followed by a copy of its
+/// start (InitSolidNoise; the permutation loop reproduces POV-Ray's, which swaps every other entry and
+/// starts at the slot past the end).
+struct SolidNoiseTables {
+  static constexpr int kEntries = 2048;
+  std::array<int, 2 * (kEntries + 1)> permutation{};
+  std::array<Vec3, 2 * (kEntries + 1)> gradients{};
+  SolidNoiseTables() {
+    TableRandom random{1};
+    for (int i = 0; i < kEntries; ++i) {
+      Vec3 v;
+      double length_squared = 0;
+      do {
+        for (int j = 0; j < 3; ++j)
+          v[j] = static_cast<double>(random.next() % (2 * kEntries) - kEntries) / kEntries;
+        length_squared = dot(v, v);
+      } while (length_squared > 1.0 || length_squared < 1.0e-5);
+      gradients[i] = v / std::sqrt(length_squared);
+    }
+    for (int i = 0; i < kEntries; ++i) permutation[i] = i;
+    for (int i = kEntries; i > 0; i -= 2) std::swap(permutation[i], permutation[random.next() % kEntries]);
+    for (int i = 0; i < kEntries + 2; ++i) {
+      permutation[kEntries + i] = permutation[i];
+      gradients[kEntries + i] = gradients[i];
+    }
+  }
+};
+
+const LatticeHash& lattice_hash() {
+  static const LatticeHash hash;
+  return hash;
+}
+
+const SolidNoiseTables& solid_tables() {
+  static const SolidNoiseTables tables;
+  return tables;
+}
+
+double s_curve(double t) {
+  return t * t * (3.0 - 2.0 * t);
+}
+
+/// One axis of the lattice: the cell (offset by 10000 and wrapped to 12 bits) and the position in it.
+/// POV-Ray rounds negative coordinates within 1e-10 of an integer up to it ("JB fix").
+struct LatticeAxis {
+  int cell;
+  double offset;
+  explicit LatticeAxis(double x) {
+    const double bounded = std::clamp(x, -1.0e9, 1.0e9);  // keeps the int conversion defined
+    const int whole = bounded >= 0 ? static_cast<int>(bounded) : static_cast<int>(bounded - (1 - 1.0e-10));
+    cell = (whole + 10000) & 0xFFF;
+    offset = bounded - whole;
+  }
+};
+
+/// The 8 corners of the lattice cell around a point: their coefficient indices, S-curve weights and
+/// offsets from the point.
+struct LatticeCell {
+  int index[8];
+  double weight[8];
+  Vec3 offset[8];
+  explicit LatticeCell(const Vec3& p) {
+    const LatticeAxis ax(p.x), ay(p.y), az(p.z);
+    const LatticeHash& hash = lattice_hash();
+    const double s[3] = {s_curve(ax.offset), s_curve(ay.offset), s_curve(az.offset)};
+    for (int corner = 0; corner < 8; ++corner) {
+      const int dx = corner & 1, dy = (corner >> 1) & 1, dz = corner >> 2;
+      index[corner] = hash.coefficient(hash.pair(ax.cell + dx, ay.cell + dy), az.cell + dz);
+      weight[corner] = (dx ? s[0] : 1 - s[0]) * (dy ? s[1] : 1 - s[1]) * (dz ? s[2] : 1 - s[2]);
+      offset[corner] = Vec3{ax.offset - dx, ay.offset - dy, az.offset - dz};
+    }
+  }
+};
+
+/// The linear function a corner contributes: half its first coefficient plus the next three times the
+/// offset (POV-Ray's INCRSUM).
+double value_term(int k, const Vec3& d) {
+  return 0.5 * kCoefficients[k] + kCoefficients[k + 1] * d.x + kCoefficients[k + 2] * d.y +
+         kCoefficients[k + 3] * d.z;
+}
+
+double lattice_noise(const Vec3& p) {
+  const LatticeCell cell(p);
+  double sum = 0;
+  for (int c = 0; c < 8; ++c) sum += cell.weight[c] * value_term(cell.index[c], cell.offset[c]);
+  return sum;
+}
+
+/// Perlin's 1985 noise ("SolidNoise"), about [-1, 1]; POV-Ray shifts coordinates by a large
+/// non-integer so that negative ones need no special case.
+double solid_noise(const Vec3& p) {
+  constexpr double kRollover = 10000000.023157213;
+  constexpr int kMask = SolidNoiseTables::kEntries - 1;
+  const SolidNoiseTables& t = solid_tables();
+  int b0[3], b1[3];
+  double r0[3], s[3];
+  for (int a = 0; a < 3; ++a) {
+    const double shifted = p[a] + kRollover;
+    const double whole = std::floor(shifted);
+    b0[a] = static_cast<int>(static_cast<int64_t>(whole) & kMask);
+    b1[a] = (b0[a] + 1) & kMask;
+    r0[a] = shifted - whole;
+    s[a] = s_curve(r0[a]);
+  }
+  const int i = t.permutation[b0[0]], j = t.permutation[b1[0]];
+  const int column[2][2] = {{t.permutation[i + b0[1]], t.permutation[i + b1[1]]},
+                            {t.permutation[j + b0[1]], t.permutation[j + b1[1]]}};
+  const int z_cell[2] = {b0[2], b1[2]};
+  auto corner = [&](int dx, int dy, int dz) {
+    return dot(t.gradients[column[dx][dy] + z_cell[dz]], Vec3{r0[0] - dx, r0[1] - dy, r0[2] - dz});
+  };
+  auto lerp = [](double w, double a, double b) { return a + w * (b - a); };
+  double face[2];
+  for (int dz = 0; dz < 2; ++dz)
+    face[dz] = lerp(s[1], lerp(s[0], corner(0, 0, dz), corner(1, 0, dz)),
+                    lerp(s[0], corner(0, 1, dz), corner(1, 1, dz)));
+  return lerp(s[2], face[0], face[1]);
+}
+
+/// One octave of scalar turbulence as POV-Ray weighs it for each generator.
+double turbulence_octave(const Vec3& p, NoiseGenerator generator) {
+  const double n = povray_noise(p, generator);
+  return generator == NoiseGenerator::original ? n : 2.0 * n - 0.5;
+}
+
+}  // namespace
+
+double povray_noise(const Vec3& p, NoiseGenerator generator) {
+  double n = 0;
+  switch (generator) {
+    case NoiseGenerator::perlin:
+      n = 0.5 * (1.59 * solid_noise(p) + 0.985);
+      break;
+    case NoiseGenerator::range_corrected:
+      // POV-Ray's measured range of the raw sum, [-1.05242, 0.988997], mapped onto [0, 1].
+      n = (lattice_noise(p) + 1.05242) * 0.48985582;
+      break;
+    case NoiseGenerator::original:
+      n = lattice_noise(p) + 0.5;
+      break;
+  }
+  return std::clamp(n, 0.0, 1.0);
+}
+
+Vec3 povray_dnoise(const Vec3& p) {
+  // Each component draws its coefficients 4 entries further along the table (POV-Ray's DNoise).
+  const LatticeCell cell(p);
+  Vec3 sum{0, 0, 0};
+  for (int c = 0; c < 8; ++c)
+    for (int axis = 0; axis < 3; ++axis)
+      sum[axis] += cell.weight[c] * value_term(cell.index[c] + 4 * axis, cell.offset[c]);
+  return sum;
+}
+
+double povray_turbulence(const Vec3& p, int octaves, double lambda, double omega, NoiseGenerator generator) {
+  double value = povray_noise(p, generator);
+  if (generator != NoiseGenerator::original) value = std::clamp(2.0 * value - 0.5, 0.0, 1.0);
+  double frequency = lambda, weight = omega;
+  for (int i = 2; i <= octaves; ++i, frequency *= lambda, weight *= omega)
+    value += weight * turbulence_octave(p * frequency, generator);
+  return value;
+}
+
+Vec3 povray_vector_turbulence(const Vec3& p, int octaves, double lambda, double omega) {
+  Vec3 sum = povray_dnoise(p);
+  double frequency = lambda, weight = omega;
+  for (int i = 2; i <= octaves; ++i, frequency *= lambda, weight *= omega)
+    sum += povray_dnoise(p * frequency) * weight;
+  return sum;
+}
+
+}  // namespace snell::texture

@@ -1,0 +1,32 @@
+#pragma once
+// POV-Ray 3.7's own noise functions, so that noise patterns give the same pixels as POV-Ray renders
+// (POV-Ray 3.7 reference, "noise_generator"; algorithm from POV-Ray's source, core/material/noise.cpp and
+// portablenoise.cpp, reimplemented here):
+//   1 "original": lattice noise summing, at the 8 cell corners, a hashed linear function weighted by the
+//     cubic S-curve, shifted by 0.5 and clamped to [0, 1];
+//   2 "range corrected" (3.7's default): the same sum stretched to fill [0, 1];
+//   3 "Perlin": Perlin's 1985 gradient noise, scaled to about [0, 1].
+#include "snell/math/vec3.hpp"
+
+namespace snell::texture {
+
+enum class NoiseGenerator { original = 1, range_corrected = 2, perlin = 3 };
+
+/// POV-Ray's generator when a scene names none (3.7: range corrected).
+constexpr NoiseGenerator kDefaultNoiseGenerator = NoiseGenerator::range_corrected;
+
+/// POV-Ray's Noise(): a scalar in [0, 1].
+double povray_noise(const math::Vec3& p, NoiseGenerator generator = kDefaultNoiseGenerator);
+
+/// POV-Ray's DNoise(): a vector whose components lie in about [-1, 1] (same for every generator).
+math::Vec3 povray_dnoise(const math::Vec3& p);
+
+/// POV-Ray's Turbulence(): noise summed over `octaves`, each `lambda` times the frequency and `omega`
+/// times the weight of the previous one. Generators 2 and 3 use each octave as 2 * noise - 0.5.
+double povray_turbulence(const math::Vec3& p, int octaves, double lambda, double omega,
+                         NoiseGenerator generator = kDefaultNoiseGenerator);
+
+/// POV-Ray's DTurbulence(): the same octave sum of povray_dnoise.
+math::Vec3 povray_vector_turbulence(const math::Vec3& p, int octaves, double lambda, double omega);
+
+}  // namespace snell::texture
