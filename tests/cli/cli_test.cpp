@@ -1,5 +1,6 @@
 // Runs the `snell` binary: each bad command line gives one clear error line and a non-zero exit code.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -25,7 +26,9 @@ size_t lines(const std::string& s) {
 }
 
 std::string scene_file() {
-  const auto path = std::filesystem::temp_directory_path() / "snell_cli_test.pov";
+  // One file per test process: ctest runs these tests in parallel processes.
+  const auto path =
+      std::filesystem::temp_directory_path() / ("snell_cli_test_" + std::to_string(getpid()) + ".pov");
   std::ofstream(path) << "sphere { 0, 1 }\n";
   return path.string();
 }

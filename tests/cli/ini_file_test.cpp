@@ -1,6 +1,7 @@
 // POV-Ray .ini files and animation switches: the frame and clock a scene sees follow POV-Ray's rules
 // (clock = initial_clock + (frame - initial_frame) * (final_clock - initial_clock) / (frames - 1)).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -11,7 +12,9 @@
 namespace snell {
 namespace {
 
-const std::filesystem::path folder = std::filesystem::temp_directory_path() / "snell_ini_test";
+// One folder per test process: ctest runs these tests in parallel processes.
+const std::filesystem::path folder =
+    std::filesystem::temp_directory_path() / ("snell_ini_test_" + std::to_string(getpid()));
 
 /// Writes a scene that prints its animation values and returns the output of `snell args`.
 test::Outcome run_with(const std::string& args, const std::string& ini_text = "") {
