@@ -173,13 +173,17 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   sp.finish = &hit.object->texture->finish_at(hit.point);
   sp.point = hit.point;
   sp.raw_normal = hit.normal;
-  sp.normal = hit.object->texture->shading_normal(hit.point, hit.shading_normal, hit.uv);
+  Vec3 shape_normal = hit.shading_normal;
   // POV-Ray shades the side facing the viewer (trace.cpp, ComputeOneTextureColour flips the normal).
   if (dot(sp.raw_normal, ray.direction) > 0) {
     sp.raw_normal = -sp.raw_normal;
-    sp.normal = -sp.normal;
+    shape_normal = -shape_normal;
   }
-  if (dot(sp.normal, ray.direction) > 0) sp.normal = sp.raw_normal;
+  // An interpolated normal (smooth triangles) that faces away falls back to the true one.
+  if (dot(shape_normal, ray.direction) > 0) shape_normal = sp.raw_normal;
+  // The texture's normal then bends the oriented normal, as POV-Ray perturbs its flipped raw normal
+  // (trace.cpp: layNormal = rawnormal; Perturb_Normal); a bump may face away, and it keeps it.
+  sp.normal = hit.object->texture->shading_normal(hit.point, shape_normal, hit.uv);
   sp.pigment = pigment_at(hit);
   const material::Rgbft& pc = sp.pigment;
   const material::Finish& f = *sp.finish;
