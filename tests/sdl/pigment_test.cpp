@@ -59,6 +59,17 @@ TEST(SdlPigment, AverageIsTheWeightedMeanOfItsMap) {
             std::string::npos);
 }
 
+TEST(SdlPigment, FunctionPatternEvaluatesTheUserFunction) {
+  // POV-Ray reference, "Function Pattern": the value of f(x, y, z) through the colour map; the ramp wave
+  // folds 1.25 to 0.25.
+  const std::string scene =
+      "plane { y, 0 pigment { function { x * 0.5 } color_map { [0 rgb 0] [1 rgb <1, 0, 1>] } } }";
+  expect_rgb(color_at(scene, {0.5, 0, 0}), 0.25, 0, 0.25);
+  EXPECT_NEAR(color_at(scene, {2.5, 0, 0}).rgb.r, 0.25, 2e-5);
+  EXPECT_NE(sdl::test::error_of("plane { y, 0 pigment { function(a) { a } } }").find("three arguments"),
+            std::string::npos);
+}
+
 TEST(SdlPigment, CheckerOfPigmentsAndScale) {
   const std::string scene = R"(
     plane { y, 0 pigment { checker pigment { rgb 1 }, pigment { gradient x } scale 2 } })";

@@ -220,6 +220,8 @@ class Parser {
   // ---- user functions (function_compiler.cpp) ----
   /// `[(params)] { body }` after the `function` keyword (also for isosurface's `function { ... }`).
   std::shared_ptr<const function::Function> parse_function_block();
+  /// `{ ... }` after the `function` pattern keyword.
+  std::shared_ptr<const texture::ValuePattern> parse_function_pattern(const Token& keyword);
   /// `(args)` after the name of a declared function, in an ordinary expression.
   Numeric call_function(const Token& name, const function::Function& f);
 

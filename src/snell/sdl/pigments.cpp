@@ -7,6 +7,7 @@
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
 #include "snell/texture/cellular_patterns.hpp"
+#include "snell/texture/function_pattern.hpp"
 #include "snell/texture/image_pattern.hpp"
 #include "snell/texture/noise_patterns.hpp"
 #include "snell/texture/ripple_patterns.hpp"
@@ -30,9 +31,9 @@ PigmentPtr solid(const material::Rgbft& c) {
 
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
-  static const char* const patterns[] = {"density_file", "facets",     "function",       "pavement", "square",
-                                         "tiling",       "triangular", "object",         "aoi",      "cubic",
-                                         "magnet",       "potential",  "pigment_pattern"};
+  static const char* const patterns[] = {"density_file", "facets",     "pavement",  "square",
+                                         "tiling",       "triangular", "object",    "aoi",
+                                         "cubic",        "magnet",     "potential", "pigment_pattern"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -55,6 +56,19 @@ std::shared_ptr<const material::Pigment> Parser::parse_pigment_block(
     fail(where, e.what());  // an inconsistent pattern: no map for `average`, a wrong entry count...
   }
   return pigment ? pigment : solid(material::Rgbft{});
+}
+
+std::shared_ptr<const texture::ValuePattern> Parser::parse_function_pattern(const Token& keyword) {
+  const std::shared_ptr<const function::Function> f = parse_function_block();
+  if (f->arity() != 3) fail(keyword.where, "a function pattern takes the three arguments x, y, z");
+  // Evaluate once here so that a function snell cannot evaluate is a parse error, not a render failure.
+  try {
+    const double origin[3] = {0, 0, 0};
+    f->call(origin);
+  } catch (const std::exception& e) {
+    fail(keyword.where, e.what());
+  }
+  return std::make_shared<texture::FunctionPattern>(f);
 }
 
 void Parser::parse_pigment_body(PigmentBuilder& b, const char* closer) {
@@ -140,6 +154,9 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     value = std::make_shared<texture::ImagePattern>(image);
   } else if (w == "cells") {
     value = std::make_shared<texture::CellsPattern>();
+  } else if (w == "function") {
+    raw_next();
+    value = parse_function_pattern(t);
   } else if (w == "wrinkles") {
     value = std::make_shared<texture::WrinklesPattern>();
   } else if (w == "bumps") {
@@ -153,7 +170,7 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     special = w;
   }
   if (value) {
-    if (w != "gradient" && w != "image_pattern" && w != "slope") raw_next();
+    if (w != "gradient" && w != "image_pattern" && w != "slope" && w != "function") raw_next();
     b.start_pattern();
     b.spec.value_pattern = std::move(value);
     b.special = special;
