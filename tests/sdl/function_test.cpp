@@ -24,6 +24,13 @@ TEST(SdlFunction, DefaultParametersAreXYZ) {
   EXPECT_DOUBLE_EQ(value_of(f, "F(-1, 0, 0.5) * 2"), -199);
 }
 
+TEST(SdlFunction, SceneConstantsAreConstantsInsideFunctions) {
+  // gamma_showcase.pov divides by image_height inside a function; the defaults are 320 x 240.
+  EXPECT_DOUBLE_EQ(value_of("#declare F = function { x / image_height + image_width }", "F(120, 0, 0)"),
+                   320.5);
+  EXPECT_DOUBLE_EQ(value_of("#declare F = function { tau / pi + true }", "F(0, 0, 0)"), 3);
+}
+
 TEST(SdlFunction, NamedParametersAndPrecedence) {
   // Checked with POV-Ray 3.7: m(10, 3) = 4; 1+2<4&0|1 = 1.
   EXPECT_DOUBLE_EQ(value_of("#declare M = function(a, b) { a - b * 2 }", "M(10, 3)"), 4);

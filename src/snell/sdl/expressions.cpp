@@ -528,21 +528,7 @@ Numeric Parser::parse_primary() {
     raw_next();
     return Numeric{{0, 1, 0, 0, 0}, 2, false};
   }
-  if (w == "pi") return constant(math::kPi);
-  if (w == "tau") return constant(2 * math::kPi);
-  if (w == "true" || w == "on" || w == "yes") return constant(1);
-  if (w == "false" || w == "off" || w == "no") return constant(0);
-  if (w == "version") return constant(version_);
-  if (w == "clock") return constant(options_.clock);
-  if (w == "clock_delta") return constant(options_.clock_delta());
-  if (w == "clock_on") return constant(options_.clock_on ? 1 : 0);
-  if (w == "initial_clock") return constant(options_.initial_clock);
-  if (w == "final_clock") return constant(options_.final_clock);
-  if (w == "initial_frame") return constant(options_.initial_frame);
-  if (w == "final_frame") return constant(options_.final_frame);
-  if (w == "frame_number") return constant(options_.frame_number);
-  if (w == "image_width") return constant(options_.image_width);
-  if (w == "image_height") return constant(options_.image_height);
+  if (const std::optional<double> c = builtin_constant(w)) return constant(*c);
   if (w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w == "red" || w == "green" || w == "blue" ||
       w == "filter" || w == "transmit" || w == "color")
     return parse_color_keywords();
@@ -555,6 +541,25 @@ Numeric Parser::parse_primary() {
   }
   raw_next();
   return parse_function(t);
+}
+
+std::optional<double> Parser::builtin_constant(const std::string& w) const {
+  if (w == "pi") return math::kPi;
+  if (w == "tau") return 2 * math::kPi;
+  if (w == "true" || w == "on" || w == "yes") return 1.0;
+  if (w == "false" || w == "off" || w == "no") return 0.0;
+  if (w == "version") return version_;
+  if (w == "clock") return options_.clock;
+  if (w == "clock_delta") return options_.clock_delta();
+  if (w == "clock_on") return options_.clock_on ? 1.0 : 0.0;
+  if (w == "initial_clock") return options_.initial_clock;
+  if (w == "final_clock") return options_.final_clock;
+  if (w == "initial_frame") return static_cast<double>(options_.initial_frame);
+  if (w == "final_frame") return static_cast<double>(options_.final_frame);
+  if (w == "frame_number") return static_cast<double>(options_.frame_number);
+  if (w == "image_width") return static_cast<double>(options_.image_width);
+  if (w == "image_height") return static_cast<double>(options_.image_height);
+  return std::nullopt;
 }
 
 Numeric Parser::parse_color_keywords() {

@@ -210,10 +210,8 @@ class FunctionCompiler {
       p_.raw_next();
       out_.constant(value);
     };
-    if (w == "pi") return constant(math::kPi);
-    if (w == "true" || w == "on" || w == "yes") return constant(1);
-    if (w == "false" || w == "off" || w == "no") return constant(0);
-    if (w == "clock") return constant(p_.options_.clock);
+    // The scene's constants (pi, clock, image_width...) are constants inside a function too.
+    if (const std::optional<double> c = p_.builtin_constant(w)) return constant(*c);
     if (w == "min" || w == "max") {
       p_.raw_next();
       const std::uint32_t n = arguments(w);

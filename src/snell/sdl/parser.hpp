@@ -195,6 +195,8 @@ class Parser {
   Numeric parse_postfix();
   Numeric parse_primary();
   Numeric parse_color_keywords();
+  /// The built-in float constants (`pi`, `true`, `version`, `clock`, `image_width`...), or nothing.
+  std::optional<double> builtin_constant(const std::string& word) const;
   Numeric parse_function(const Token& name);
   /// `dimensions(A)`, `dimension_size(A, n)` (arrays.cpp).
   Numeric parse_array_function(const Token& name);
