@@ -70,6 +70,15 @@ TEST(SdlPigment, FunctionPatternEvaluatesTheUserFunction) {
             std::string::npos);
 }
 
+TEST(SdlPigment, PigmentPatternUsesTheGreyValue) {
+  // POV-Ray's PigmentPattern: greyscale 0.297 R + 0.589 G + 0.114 B (base/colour.h) through the colour map.
+  const std::string scene =
+      "plane { y, 0 pigment { pigment_pattern { checker rgb <1, 0, 0> rgb <0, 1, 0> } "
+      "color_map { [0 rgb 0] [1 rgb 1] } } }";
+  expect_rgb(color_at(scene, {0.5, 0.5, 0.5}), 0.297, 0.297, 0.297);
+  expect_rgb(color_at(scene, {1.5, 0.5, 0.5}), 0.589, 0.589, 0.589);
+}
+
 TEST(SdlPigment, CheckerOfPigmentsAndScale) {
   const std::string scene = R"(
     plane { y, 0 pigment { checker pigment { rgb 1 }, pigment { gradient x } scale 2 } })";

@@ -10,6 +10,7 @@
 #include "snell/texture/function_pattern.hpp"
 #include "snell/texture/image_pattern.hpp"
 #include "snell/texture/noise_patterns.hpp"
+#include "snell/texture/pigment_pattern.hpp"
 #include "snell/texture/ripple_patterns.hpp"
 #include "snell/texture/slope_pattern.hpp"
 #include "snell/texture/spiral_patterns.hpp"
@@ -31,9 +32,9 @@ PigmentPtr solid(const material::Rgbft& c) {
 
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
-  static const char* const patterns[] = {"density_file", "facets",     "pavement",  "square",
-                                         "tiling",       "triangular", "object",    "aoi",
-                                         "cubic",        "magnet",     "potential", "pigment_pattern"};
+  static const char* const patterns[] = {"density_file", "facets",     "pavement", "square",
+                                         "tiling",       "triangular", "object",   "aoi",
+                                         "cubic",        "magnet",     "potential"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -157,6 +158,9 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
   } else if (w == "function") {
     raw_next();
     value = parse_function_pattern(t);
+  } else if (w == "pigment_pattern") {
+    raw_next();
+    value = std::make_shared<texture::PigmentPattern>(parse_pigment_block(nullptr));
   } else if (w == "wrinkles") {
     value = std::make_shared<texture::WrinklesPattern>();
   } else if (w == "bumps") {
@@ -170,7 +174,8 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     special = w;
   }
   if (value) {
-    if (w != "gradient" && w != "image_pattern" && w != "slope" && w != "function") raw_next();
+    if (w != "gradient" && w != "image_pattern" && w != "slope" && w != "function" && w != "pigment_pattern")
+      raw_next();
     b.start_pattern();
     b.spec.value_pattern = std::move(value);
     b.special = special;
