@@ -2,12 +2,11 @@
 // one byte each without expanding them through the palette.
 #include "snell/io/png_indices.hpp"
 
-#include <png.h>
-
 #include <csetjmp>
 #include <cstdio>
 
 #include "snell/io/image_file.hpp"
+#include "snell/io/png_errors.hpp"
 
 namespace snell::io {
 
@@ -23,19 +22,11 @@ enum class Outcome { indexed, not_indexed, damaged };
 struct PngRead {
   std::FILE* file;
   IndexedImage* image;
-  char error[256];
+  PngError error;
 };
 
-void on_png_error(png_structp png, png_const_charp message) {
-  auto* job = static_cast<PngRead*>(png_get_error_ptr(png));
-  std::snprintf(job->error, sizeof job->error, "%s", message);
-  png_longjmp(png, 1);
-}
-
-void on_png_warning(png_structp, png_const_charp) {}
-
 Outcome decode(PngRead& job) {
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &job, on_png_error, on_png_warning);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &job.error, on_png_error, on_png_warning);
   if (!png) return Outcome::damaged;
   png_infop info = png_create_info_struct(png);
   if (!info || setjmp(png_jmpbuf(png))) {
@@ -79,7 +70,8 @@ std::optional<IndexedImage> read_png_indices(const std::filesystem::path& path) 
   const Outcome outcome = decode(job);
   std::fclose(file);
   if (outcome == Outcome::damaged)
-    throw ImageIoError(path.string() + ": damaged PNG (" + (job.error[0] ? job.error : "unreadable") + ")");
+    throw ImageIoError(path.string() + ": damaged PNG (" +
+                       (job.error.message[0] ? job.error.message : "unreadable") + ")");
   if (outcome == Outcome::not_indexed) return std::nullopt;
   return image;
 }

@@ -1,10 +1,10 @@
 #include "snell/io/png_writer.hpp"
 
-#include <png.h>
-
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+
+#include "snell/io/png_errors.hpp"
 
 namespace snell::io {
 
@@ -16,19 +16,11 @@ struct PngJob {
   int width, height, channels, bits;
   const unsigned char* pixels;
   bool srgb;
-  char error[256];
+  PngError error;
 };
 
-void on_png_error(png_structp png, png_const_charp message) {
-  auto* job = static_cast<PngJob*>(png_get_error_ptr(png));
-  std::snprintf(job->error, sizeof job->error, "%s", message);
-  png_longjmp(png, 1);
-}
-
-void on_png_warning(png_structp, png_const_charp) {}
-
 bool encode(PngJob& job) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job, on_png_error, on_png_warning);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job.error, on_png_error, on_png_warning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
   if (!info || setjmp(png_jmpbuf(png))) {
@@ -59,7 +51,7 @@ std::string write_png(const std::filesystem::path& path, int width, int height, 
   if (!job.file) return std::strerror(errno);
   const bool ok = encode(job);
   const bool closed = std::fclose(job.file) == 0;
-  if (!ok) return job.error[0] ? job.error : "PNG encoder failed";
+  if (!ok) return job.error.message[0] ? job.error.message : "PNG encoder failed";
   if (!closed) return std::strerror(errno);
   return {};
 }
