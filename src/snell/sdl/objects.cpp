@@ -28,8 +28,9 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   if (t.kind != Token::Kind::identifier) return std::nullopt;
   const std::string& w = t.text;
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
-      w == "blob" || w == "mesh" || w == "mesh2" || w == "light_source" || w == "object" || w == "isosurface" ||
-      w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" || w == "julia_fractal") {
+      w == "blob" || w == "mesh" || w == "mesh2" || w == "light_source" || w == "object" ||
+      w == "isosurface" || w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" ||
+      w == "julia_fractal") {
     raw_next();
     return parse_object(t);
   }
@@ -288,13 +289,7 @@ ParsedObject Parser::parse_blob(const Token& keyword) {
     }
   }
   if (components.empty()) fail(keyword.where, "blob has no components");
-  try {
-    o.shape = shapes::blob(threshold, std::move(components));
-  } catch (const std::exception& e) {
-    fail(keyword.where, e.what());
-  }
-  parse_object_modifiers(o);
-  return o;
+  return finish_shape(std::move(o), keyword, [&] { return shapes::blob(threshold, std::move(components)); });
 }
 
 ParsedObject Parser::parse_mesh(const Token& keyword) {
