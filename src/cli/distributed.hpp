@@ -5,6 +5,7 @@
 // self-contained and seeded by pixel, so the image is identical to a single-process render for any N.
 // Built only where MPI is (SNELL_HAVE_MPI); elsewhere these are single-process stand-ins.
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
@@ -43,5 +44,12 @@ struct Job {
 /// Renders `job` over all ranks into `image` (meaningful on rank 0). Returns the statistics summed over
 /// ranks on rank 0, this rank's own elsewhere.
 render::RenderStats render(const Job& job, io::Image& image);
+
+/// Hands out the next tile to a render thread, or nothing when there is none left (calls may overlap).
+using TileSource = std::function<std::optional<render::Tile>()>;
+/// Renders the tiles `next_tile` gives on this process's cores, reporting each to job.tile_done.
+render::RenderStats render_local(const Job& job, io::Image& image, const TileSource& next_tile);
+/// The whole job in this process, tiles in order.
+render::RenderStats render_alone(const Job& job, io::Image& image);
 
 }  // namespace snell::cli::distributed

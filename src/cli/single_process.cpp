@@ -17,13 +17,7 @@ const char* support() {
 }
 
 render::RenderStats render(const Job& job, io::Image& image) {
-  render::RenderOptions options = job.options;
-  options.tile_done = [&job](const render::Tile& t, const io::Image&) { job.tile_done(t); };
-  std::vector<bool> queued(static_cast<size_t>(render::tiles_across(options.width)) *
-                           render::tiles_down(options.height));
-  for (const render::Tile& t : job.tiles) queued[static_cast<size_t>(t.index)] = true;
-  options.skip_tile = [&queued](const render::Tile& t) { return !queued[static_cast<size_t>(t.index)]; };
-  return render::Renderer(job.scene, job.accelerator, options).render_into(image);
+  return render_alone(job, image);
 }
 
 }  // namespace snell::cli::distributed

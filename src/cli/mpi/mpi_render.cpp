@@ -92,12 +92,8 @@ render::RenderStats lead(const Job& job, io::Image& image) {
     return job.tiles[next++];
   };
 
-  render::RenderOptions options = job.options;
-  options.tile_source = take;
-  options.tile_done = [&](const render::Tile& t, const io::Image&) { job.tile_done(t); };
   render::RenderStats local;
-  std::thread local_render(
-      [&] { local = render::Renderer(job.scene, job.accelerator, options).render_into(image); });
+  std::thread local_render([&] { local = render_local(job, image, take); });
 
   render::RenderStats total;
   const int workers = size() - 1;
@@ -155,6 +151,7 @@ render::RenderStats lead(const Job& job, io::Image& image) {
 }  // namespace
 
 render::RenderStats render(const Job& job, io::Image& image) {
+  if (size() == 1) return render_alone(job, image);  // no mpirun: no queue, no second thread
   return rank() == 0 ? lead(job, image) : work(job, image);
 }
 
