@@ -5,8 +5,11 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <mutex>
+#include <optional>
 #include <set>
+#include <vector>
 
 #include "scene_builder.hpp"
 #include "snell/accel/accelerator.hpp"
@@ -60,18 +63,32 @@ TEST(TilesTest, RegionPixelsEqualTheWholeRenderAndTheRestStaysUnrendered) {
     }
 }
 
-TEST(TilesTest, SkippedTilesAreLeftAndTheRestCompletesTheImage) {
+/// A tile source handing out, in order, the tiles of the whole 100 x 70 image whose index has `parity`.
+std::function<std::optional<Tile>()> tiles_of_parity(int parity, std::vector<Tile>& storage,
+                                                     std::atomic<size_t>& next) {
+  for (const Tile& t : make_tiles(100, 70, {0, 0, 100, 70}))
+    if (t.index % 2 == parity) storage.push_back(t);
+  return [&storage, &next]() -> std::optional<Tile> {
+    const size_t i = next++;
+    if (i >= storage.size()) return std::nullopt;
+    return storage[i];
+  };
+}
+
+TEST(TilesTest, TilesFromASourceCompleteAnImageBegunByAnotherRun) {
   const scene::Scene s = test::two_spheres();
   const auto accel = accel::make_accelerator("none", s);
   const RenderResult whole = Renderer(s, *accel, options()).render();
-  // First run: even tiles only; second run skips them, as a resumed render does.
+  // First run: even tiles only; the second run renders the rest, as a resumed render does.
+  std::vector<Tile> evens, odds;
+  std::atomic<size_t> next_even{0}, next_odd{0};
   RenderOptions first = options();
-  first.skip_tile = [](const Tile& t) { return t.index % 2 == 1; };
+  first.tile_source = tiles_of_parity(0, evens, next_even);
   const Renderer a(s, *accel, first);
   io::Image image = a.blank_target();
   a.render_into(image);
   RenderOptions second = options();
-  second.skip_tile = [](const Tile& t) { return t.index % 2 == 0; };
+  second.tile_source = tiles_of_parity(1, odds, next_odd);
   std::mutex m;
   std::set<int> reported;
   second.tile_done = [&](const Tile& t, const io::Image&) {

@@ -74,7 +74,6 @@ RenderStats Renderer::render_into(io::Image& image) const {
     throw std::invalid_argument("render target does not match the image size");
   std::vector<Tile> tiles;
   if (!options_.tile_source) tiles = make_tiles(w, h, region());
-  if (options_.skip_tile) std::erase_if(tiles, [&](const Tile& t) { return options_.skip_tile(t); });
   // Focal blur samples already spread over each pixel, so they are its anti-aliasing too.
   const bool antialias = options_.antialias && !scene_.camera.focal_blur();
 

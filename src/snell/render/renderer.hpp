@@ -35,10 +35,9 @@ struct RenderOptions {
   /// The pixels to render (POV-Ray +SC/+EC/+SR/+ER); empty means the whole image. Pixels outside keep
   /// alpha 0. Every pixel inside comes out exactly as in a render of the whole image.
   PixelRect region;
-  /// Tiles already rendered (a resumed render): left as they are in the target image.
-  std::function<bool(const Tile&)> skip_tile;
-  /// When set, tiles come from here instead (region and skip_tile unused): each render thread asks for the
-  /// next tile until it returns nothing. Calls may overlap. Used by distributed renders (src/cli/mpi).
+  /// When set, tiles come from here instead of the region's tiling (region unused): each render thread
+  /// asks for the next tile until it returns nothing. Calls may overlap. The `snell` program renders this
+  /// way (src/cli/local_render.cpp), leaving out the tiles of a resume file and sharing them with MPI ranks.
   std::function<std::optional<Tile>()> tile_source;
   /// Set from another thread (Ctrl-C) to stop early; finished tiles stay in the image.
   const std::atomic<bool>* cancel = nullptr;
@@ -66,8 +65,8 @@ class Renderer {
   /// Throws std::invalid_argument for bad options (size, aa depth, threads, integrator name).
   Renderer(const scene::Scene& scene, const accel::Accelerator& accelerator, RenderOptions options);
   RenderResult render() const;
-  /// Renders the region's tiles not skipped into `target` (width x height, with a coverage channel, as from
-  /// blank_target()), leaving other pixels untouched.
+  /// Renders the region's tiles (or the tile source's) into `target` (width x height, with a coverage
+  /// channel, as from blank_target()), leaving other pixels untouched.
   RenderStats render_into(io::Image& target) const;
   /// A black image of the options' size with every pixel marked unrendered.
   io::Image blank_target() const;
