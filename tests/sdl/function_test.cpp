@@ -100,8 +100,10 @@ TEST(SdlFunction, ErrorsAreClear) {
   const std::string inc = "#include \"functions.inc\"\n";
   EXPECT_NE(test::error_of(inc + "#declare A = f_ridge(0, 0, 0, 1, 2, 3, 4, 5, 6);").find("f_ridge"),
             std::string::npos);
-  EXPECT_NE(test::error_of(inc + "#declare A = f_agate(0, 0, 0);").find("not supported yet"),
-            std::string::npos);
+  // functions.inc's pattern functions (f_agate is `function { pattern { agate } }`) now evaluate.
+  EXPECT_EQ(
+      test::error_of(inc + "#declare A = f_agate(0.3, 0.2, 0.1);\n#if (A < 0 | A > 1) #error \"range\" #end"),
+      "");
   EXPECT_NE(test::error_of(inc + "#declare A = f_sphere(0, 0, 0);").find("takes 4 argument"),
             std::string::npos);
   EXPECT_NE(test::error_of("#declare F = function { q + 1 }").find("unknown identifier 'q'"),

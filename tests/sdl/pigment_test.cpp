@@ -150,9 +150,8 @@ TEST(SdlPigment, WarpTurbulenceMovesThePatternPoint) {
   const math::Vec3 p{0.3, 0.41, 0.77};
   EXPECT_NEAR(color_at(plain, p).rgb.r, 0.3, 1e-9);
   EXPECT_GT(std::fabs(color_at(warped, p).rgb.r - 0.3), 1e-4);
-  EXPECT_NE(
-      sdl::test::error_of("sphere { 0, 1 pigment { onion warp { black_hole 0, 1 } } }").find("black_hole"),
-      std::string::npos);
+  EXPECT_NE(sdl::test::error_of("sphere { 0, 1 pigment { onion warp { spin 0, 1 } } }").find("spin"),
+            std::string::npos);
 }
 
 TEST(SdlPigment, BadPatternsAreClearErrors) {

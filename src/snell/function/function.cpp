@@ -41,6 +41,13 @@ void ProgramBuilder::call(std::shared_ptr<const Function> callee, std::uint32_t 
   push(1 - static_cast<int>(argument_count));
 }
 
+void ProgramBuilder::call_component(std::shared_ptr<const Function> callee, std::uint32_t argument_count,
+                                    std::uint32_t component) {
+  call(std::move(callee), argument_count);
+  program_.code.back().op = Op::call_component;
+  program_.code.back().value = component;
+}
+
 Program ProgramBuilder::finish() {
   if (depth_ != 1) throw FunctionError("internal error: a function body must leave one value");
   return std::move(program_);
@@ -65,6 +72,19 @@ std::shared_ptr<const Function> Function::native(std::string name, std::size_t a
   return f;
 }
 
+std::shared_ptr<const Function> Function::vector(std::string name, std::size_t arity, std::size_t components,
+                                                 VectorNative fn) {
+  if (components < 1 || components > kMaxComponents)
+    throw FunctionError("a vector function has 1 to 5 components");
+  auto f = std::make_shared<Function>();
+  f->kind_ = Kind::vector;
+  f->name_ = std::move(name);
+  f->arity_ = arity;
+  f->components_ = components;
+  f->vector_ = std::move(fn);
+  return f;
+}
+
 std::shared_ptr<const Function> Function::unsupported(std::string name, std::size_t arity,
                                                       std::string reason) {
   auto f = std::make_shared<Function>();
@@ -86,12 +106,24 @@ double Function::call(const double* args) const {
   switch (kind_) {
     case Kind::native:
       return native_(args);
+    case Kind::vector: {
+      std::array<double, kMaxComponents> out{};
+      vector_(args, out.data());
+      return out[0];
+    }
     case Kind::unsupported:
       throw FunctionError(reason_);
     case Kind::compiled:
       break;
   }
   return run(args);
+}
+
+void Function::call_vector(const double* args, double* out) const {
+  if (kind_ == Kind::vector)
+    vector_(args, out);
+  else
+    out[0] = call(args);
 }
 
 double Function::run(const double* args) const {
@@ -165,6 +197,13 @@ double Function::run(const double* args) const {
         sp -= in.count;
         stack[sp] = program_.callees[in.index]->call(stack + sp);
         ++sp;
+        break;
+      }
+      case Op::call_component: {
+        std::array<double, kMaxComponents> out{};
+        sp -= in.count;
+        program_.callees[in.index]->call_vector(stack + sp, out.data());
+        stack[sp++] = out[static_cast<std::size_t>(in.value)];
         break;
       }
     }

@@ -4,6 +4,7 @@
 // millions of times without touching the parser. Depends on math only (plus texture's Perlin noise for
 // f_noise3d), never on the scene-language parser.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -37,9 +38,10 @@ enum class Op : std::uint8_t {
   greater,
   logical_and,
   logical_or,
-  unary,   // top = unary(top)
-  binary,  // b = pop, a = pop, push binary(a, b)
-  call,    // pop `count` arguments, push callees[index](arguments)
+  unary,           // top = unary(top)
+  binary,          // b = pop, a = pop, push binary(a, b)
+  call,            // pop `count` arguments, push callees[index](arguments)
+  call_component,  // like call, for a vector-valued callee: push component `value` of its result
 };
 
 struct Instruction {
@@ -69,6 +71,9 @@ class ProgramBuilder {
   void unary(double (*fn)(double));
   void binary(double (*fn)(double, double));
   void call(std::shared_ptr<const Function> callee, std::uint32_t argument_count);
+  /// Calls a vector-valued callee (a pigment, spline or transform function) and keeps one component.
+  void call_component(std::shared_ptr<const Function> callee, std::uint32_t argument_count,
+                      std::uint32_t component);
   Program finish();
 
  private:
@@ -80,23 +85,36 @@ class ProgramBuilder {
 class Function {
  public:
   using Native = double (*)(const double* args);
+  /// Writes components() values to `out`.
+  using VectorNative = std::function<void(const double* args, double* out)>;
+  /// The most components a vector function returns: a colour's red, green, blue, filter, transmit.
+  static constexpr std::size_t kMaxComponents = 5;
 
   static std::shared_ptr<const Function> compiled(std::vector<std::string> parameters, Program program);
   static std::shared_ptr<const Function> native(std::string name, std::size_t arity, Native fn);
   /// Declares fine; every call throws FunctionError with `reason`.
+  /// A vector-valued function (POV-Ray's `function { pigment {..} }`, `{ spline {..} }`,
+  /// `{ transform {..} }`): used through a component, `F(x,y,z).red`, or as a whole in scene expressions.
+  static std::shared_ptr<const Function> vector(std::string name, std::size_t arity, std::size_t components,
+                                                VectorNative fn);
   static std::shared_ptr<const Function> unsupported(std::string name, std::size_t arity, std::string reason);
 
   std::size_t arity() const { return arity_; }
   const std::string& name() const { return name_; }
   const std::vector<std::string>& parameters() const { return parameters_; }
   bool supported() const { return kind_ != Kind::unsupported; }
+  /// 1 for float functions; 3 (vector) or 5 (colour) for vector functions.
+  std::size_t components() const { return components_; }
 
   /// Evaluates with exactly arity() arguments; throws FunctionError otherwise or when unsupported.
   double operator()(std::span<const double> args) const;
+  /// A float function's value; a vector function's first component (as POV-Ray's VM leaves it).
   double call(const double* args) const;
+  /// All components() values of a call (a float function fills one).
+  void call_vector(const double* args, double* out) const;
 
  private:
-  enum class Kind { compiled, native, unsupported };
+  enum class Kind { compiled, native, vector, unsupported };
   double run(const double* args) const;
 
   Kind kind_ = Kind::compiled;
@@ -105,6 +123,8 @@ class Function {
   std::vector<std::string> parameters_;
   Program program_;
   Native native_ = nullptr;
+  VectorNative vector_;
+  std::size_t components_ = 1;
   std::string reason_;
 };
 

@@ -148,6 +148,7 @@ bool Parser::starts_numeric() {
                                       "clock_delta",
                                       "clock_on",
                                       "trace",
+                                      "inside",
                                       "vturbulence",
                                       "min_extent",
                                       "max_extent",
@@ -645,7 +646,7 @@ Numeric Parser::parse_function(const Token& name) {
   if (f == "dimensions" || f == "dimension_size") return parse_array_function(name);
   if (f == "seed" || f == "rand") return parse_random_function(name);
   if (is_numeric_string_function(f)) return parse_string_query(name);
-  if (f == "trace" || f == "min_extent" || f == "max_extent") return parse_object_query(name);
+  if (f == "trace" || f == "min_extent" || f == "max_extent" || f == "inside") return parse_object_query(name);
   bool known = false;
   for (const char* k : functions) known = known || f == k;
   if (!known) fail(name.where, "unknown identifier '" + f + "'");

@@ -249,6 +249,7 @@ class FunctionCompiler {
       if (n != (*f)->arity())
         p_.fail(t.where, t.text + " takes " + std::to_string((*f)->arity()) + " argument(s), found " +
                              std::to_string(n));
+      if ((*f)->components() > 1 && p_.peek().is_symbol(".")) return member(*f, n);
       out_.call(*f, n);
       return;
     }
@@ -272,6 +273,35 @@ class FunctionCompiler {
       }
     }
     p_.fail(field.where, "'." + field.text + "' is not a component of " + t.text);
+  }
+
+  /// `.red`, `.x`, `.gray`... after a call of a vector function (POV-Ray 3.7 reference, "Declaring
+  /// User-Defined Color Functions"); gray weighs red, green and blue as POV-Ray's greyscale does.
+  void member(const std::shared_ptr<const function::Function>& f, std::uint32_t argument_count) {
+    p_.raw_next();  // '.'
+    const Token field = p_.raw_next();
+    if (field.is_word("gray") || field.is_word("grey")) {
+      if (f->components() < 3) p_.fail(field.where, "'.gray' needs a colour");
+      static const double weights[3] = {0.297, 0.589, 0.114};
+      // One call of the callee, weighted: a one-component vector function around it.
+      auto gray = function::Function::vector("gray", f->arity(), 1, [f](const double* a, double* out) {
+        std::array<double, function::Function::kMaxComponents> c{};
+        f->call_vector(a, c.data());
+        out[0] = weights[0] * c[0] + weights[1] * c[1] + weights[2] * c[2];
+      });
+      out_.call(gray, argument_count);
+      return;
+    }
+    static const std::pair<const char*, std::uint32_t> fields[] = {
+        {"x", 0},   {"y", 1},     {"z", 2},    {"t", 3},      {"u", 0},       {"v", 1},
+        {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
+    for (const auto& [name, index] : fields) {
+      if (field.is_word(name) && index < f->components()) {
+        out_.call_component(f, argument_count, index);
+        return;
+      }
+    }
+    p_.fail(field.where, "'." + field.text + "' is not a component of this function's value");
   }
 
   Parser& p_;
@@ -312,28 +342,10 @@ std::shared_ptr<const function::Function> Parser::parse_function_block() {
   }
   if (first.is_word("pattern") || first.is_word("pigment") || first.is_word("transform") ||
       first.is_word("spline")) {
-    // Declaring one succeeds (functions.inc declares several) so that scenes which never call it parse.
     raw_next();
-    const std::string kind = first.text;
-    std::string detail;
-    if (peek().is_symbol("{")) {
-      raw_next();
-      if (peek().kind == Token::Kind::identifier) detail = " " + peek().text;
-      // Back onto the `{` is not possible; skip the rest of the inner block by depth.
-      int depth = 1;
-      while (depth > 0) {
-        const Token tok = raw_next();
-        if (tok.kind == Token::Kind::end) fail(first.where, "unterminated " + kind + " block in a function");
-        if (tok.is_symbol("{")) ++depth;
-        if (tok.is_symbol("}")) --depth;
-      }
-    }
+    auto f = parse_block_function(first);
     expect("}", "function");
-    const std::size_t arity = kind == "spline" ? 1 : 3;
-    return function::Function::unsupported("function { " + kind + " }", arity,
-                                           "function { " + kind + " {" + detail +
-                                               " } } is not supported yet (declared at " +
-                                               first.where.to_string() + ")");
+    return f;
   }
   FunctionCompiler compiler(*this, parameters);
   compiler.expression();
@@ -359,6 +371,16 @@ Numeric Parser::call_function(const Token& name, const function::Function& f) {
     fail(name.where, name.text + " takes " + std::to_string(f.arity()) + " argument(s), found " +
                          std::to_string(args.size()));
   try {
+    if (f.components() > 1) {
+      // A vector function's value is a vector, or a colour when it has five components.
+      std::array<double, function::Function::kMaxComponents> out{};
+      f.call_vector(args.data(), out.data());
+      Numeric n;
+      n.v = out;
+      n.size = static_cast<int>(f.components());
+      n.color = f.components() == 5;
+      return n;
+    }
     return Numeric::of(f(std::span<const double>(args)));
   } catch (const function::FunctionError& e) {
     fail(name.where, "calling " + name.text + ": " + e.what());

@@ -3,6 +3,7 @@
 // pattern's name, if a number, is its bump_size.
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
+#include "snell/texture/average_normal.hpp"
 #include "snell/texture/image_pattern.hpp"
 #include "snell/texture/pattern_normal.hpp"
 
@@ -41,6 +42,7 @@ struct Parser::NormalBuilder {
   /// Null when nothing was said. Throws std::invalid_argument as texture::PatternNormal does.
   NormalPtr build() const {
     if (!pattern.patterned) return plain;
+    if (pattern.special == "average") return std::make_shared<texture::AverageNormal>(normal_map);
     const texture::PatternSpec ps = pattern.build_spec();
     texture::NormalSpec spec;
     spec.pattern = ps.value_pattern;
@@ -162,7 +164,7 @@ void Parser::parse_normal_map(NormalBuilder& b) {
     }
     if (!t.is_symbol("[")) fail(t.where, "expected '[' or '}' in normal_map, found '" + t.text + "'");
     raw_next();
-    const double value = parse_float();
+    const double value = parse_map_entry_value(b.pattern.special == "average");
     accept(",");
     NormalBuilder entry;
     parse_normal_body(entry, "]");

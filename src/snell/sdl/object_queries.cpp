@@ -1,5 +1,6 @@
 // Functions that ask an object about its geometry while parsing (POV-Ray 3.7 reference, "Vector
-// Functions"): `trace(Object, Start, Direction [, Normal])` and `min_extent(Object)`/`max_extent(Object)`.
+// Functions"): `trace(Object, Start, Direction [, Normal])`, `min_extent(Object)`/`max_extent(Object)` and
+// `inside(Object, Point)`; and the inside test behind the `object` pattern.
 // The object is flattened into scene objects exactly as it would be placed in the scene, so the answers
 // are those of the renderer's own intersection code.
 #include <algorithm>
@@ -38,6 +39,14 @@ Numeric Parser::parse_object_query(const Token& name) {
   std::vector<std::shared_ptr<const scene::Object>> parts;
   std::vector<scene::Light> lights;
   flatten(object, parts, lights);
+  if (f == "inside") {
+    expect(",", "inside");
+    const math::Vec3 point = parse_vector();
+    expect(")", "inside");
+    const bool in =
+        std::any_of(parts.begin(), parts.end(), [&](const auto& part) { return part->inside(point); });
+    return Numeric::of(in ? 1 : 0);
+  }
   if (f == "min_extent" || f == "max_extent") {
     expect(")", f.c_str());
     math::Bounds3 box;
@@ -78,6 +87,16 @@ Numeric Parser::parse_object_query(const Token& name) {
     assign(normal_name->text, Value{vector_of(normal)});
   }
   return vector_of(found ? nearest.point : math::Vec3(0, 0, 0));
+}
+
+std::function<bool(const math::Vec3&)> Parser::parse_inside_test() {
+  const ParsedObject object = parse_object_argument("the object pattern");
+  auto parts = std::make_shared<std::vector<std::shared_ptr<const scene::Object>>>();
+  std::vector<scene::Light> lights;
+  flatten(object, *parts, lights);
+  return [parts](const math::Vec3& p) {
+    return std::any_of(parts->begin(), parts->end(), [&](const auto& part) { return part->inside(p); });
+  };
 }
 
 void Parser::assign(const std::string& name, Value value) {

@@ -5,6 +5,7 @@
 
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/shape_factory.hpp"
+#include "snell/texture/pattern_pigment.hpp"
 
 namespace snell::sdl {
 
@@ -305,11 +306,11 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
       const bool smooth = t.text == "smooth_triangle";
       std::array<int, 3> face{}, normals{};
       for (int i = 0; i < 3; ++i) {
-        if (i > 0) expect(",", t.text.c_str());
+        if (i > 0) accept(",");  // POV-Ray's Parse_Comma: the commas may be left out
         face[static_cast<size_t>(i)] = static_cast<int>(data.vertices.size());
         data.vertices.push_back(parse_vector());
         if (smooth) {
-          expect(",", t.text.c_str());
+          accept(",");
           normals[static_cast<size_t>(i)] = static_cast<int>(data.normals.size());
           data.normals.push_back(parse_vector());
         }
@@ -553,9 +554,18 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
     if (!texture->pigment) texture->pigment = default_texture_->pigment;
     return texture;
   };
-  if (w == "pigment") {
+  // POV-Ray 3.7: `uv_mapping` as an object modifier makes the textures that follow uv-mapped.
+  const auto uv =
+      [&](std::shared_ptr<const material::Pigment> pigment) -> std::shared_ptr<const material::Pigment> {
+    if (!o.uv_mapping || !pigment) return pigment;
+    return std::make_shared<texture::UvMappedPigment>(std::move(pigment));
+  };
+  if (w == "uv_mapping") {
+    if (o.texture) fail(t.where, "uv_mapping must be specified before texture");
+    o.uv_mapping = true;
+  } else if (w == "pigment") {
     const auto base = o.texture ? o.texture->pigment : nullptr;
-    attach_pigment(o, parse_pigment_block(base));
+    attach_pigment(o, uv(parse_pigment_block(base)));
   } else if (w == "finish") {
     auto texture = ensure_texture();
     texture->finish = parse_finish_block(texture->finish);
@@ -563,7 +573,14 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
   } else if (w == "texture") {
     // The texture starts in the object's current space: later object transforms move it too. A texture
     // on an object that has one goes on top of it as a new layer, as in POV-Ray (Link_Textures).
-    o.texture = material::Texture::layered(parse_texture_block(), o.texture);
+    auto texture = parse_texture_block();
+    if (o.uv_mapping && texture->pigment) {
+      // Each layer of the new texture block gets its pigment uv-mapped (texture maps' entries keep theirs).
+      auto copy = std::make_shared<material::Texture>(*texture);
+      copy->pigment = uv(copy->pigment);
+      texture = copy;
+    }
+    o.texture = material::Texture::layered(texture, o.texture);
   } else if (w == "material") {
     const auto m = parse_material_block();
     if (m->texture) o.texture = material::Texture::layered(m->texture, o.texture);

@@ -203,11 +203,20 @@ std::shared_ptr<const geometry::Shape> Parser::parse_outline_shape(const Token& 
     return shapes::sphere_sweep(spline, spheres);
   }
   // text { ttf "font.ttf" "string" thickness, offset }
+  // or text { internal N "string" ... }: POV-Ray's built-in fonts are the four TrueType files that
+  // povray-includes also ships (1 timrom, 2 cyrvetic, 3 crystal, any other number povlogo).
   const Token font_kind = peek();
-  if (!font_kind.is_word("ttf")) fail(font_kind.where, "expected 'ttf' in text");
+  if (!font_kind.is_word("ttf") && !font_kind.is_word("internal"))
+    fail(font_kind.where, "expected 'ttf' or 'internal' in text");
   raw_next();
   const scene::SourceLocation font_where = peek().where;
-  const std::string font = parse_string();
+  std::string font;
+  if (font_kind.is_word("internal")) {
+    const int id = static_cast<int>(parse_float());
+    font = id == 1 ? "timrom.ttf" : id == 2 ? "cyrvetic.ttf" : id == 3 ? "crystal.ttf" : "povlogo.ttf";
+  } else {
+    font = parse_string();
+  }
   accept(",");
   const std::string text = parse_string();
   accept(",");

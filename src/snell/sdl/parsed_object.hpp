@@ -33,6 +33,8 @@ struct ParsedObject {
   std::shared_ptr<const material::Texture> texture;
   std::shared_ptr<const material::Interior> interior;
   scene::ObjectFlags flags;
+  /// `uv_mapping` among the object's modifiers: pigments attached after it are looked up at (u, v, 0).
+  bool uv_mapping = false;
   std::string name;
   scene::SourceLocation where;
 

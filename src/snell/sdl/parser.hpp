@@ -210,6 +210,8 @@ class Parser {
   /// `trace(...)`, `min_extent(...)`, `max_extent(...)` after the function's name.
   Numeric parse_object_query(const Token& name);
   ParsedObject parse_object_argument(const char* function_name);
+  /// An object (declared or written out) as an inside test in world space, for the object pattern.
+  std::function<bool(const math::Vec3&)> parse_inside_test();
   /// Sets an existing identifier where it lives, or declares a global one (#read, trace's normal).
   void assign(const std::string& name, Value value);
 
@@ -224,6 +226,9 @@ class Parser {
   std::shared_ptr<const function::Function> parse_function_block();
   /// `{ ... }` after the `function` pattern keyword.
   std::shared_ptr<const texture::ValuePattern> parse_function_pattern(const Token& keyword);
+  /// The block after `function {` when it is `pigment`, `pattern`, `spline` or `transform`
+  /// (vector_functions.cpp); `kind` has been read.
+  std::shared_ptr<const function::Function> parse_block_function(const Token& kind);
   /// `(args)` after the name of a declared function, in an ordinary expression.
   Numeric call_function(const Token& name, const function::Function& f);
 
@@ -258,6 +263,8 @@ class Parser {
   bool parse_pattern_type(PigmentBuilder& builder);
   /// A pattern modifier (map, wave, turbulence, transform, brick size...) when one is next.
   bool parse_pattern_modifier(PigmentBuilder& builder);
+  /// The block after `warp` (warps.cpp).
+  void parse_warp(PigmentBuilder& builder);
   /// `{ [type] "file" modifiers }` after `image_map` (image_maps.cpp).
   /// In a `bump_map`, `bump_size` (when given) takes its `bump_size`.
   std::shared_ptr<const material::Pigment> parse_image_map(double* bump_size = nullptr);
@@ -266,7 +273,10 @@ class Parser {
   /// `{ [IDENT] [v colour] ... }` after `color_map`.
   std::shared_ptr<const texture::ColorMap> parse_color_map();
   /// `{ [IDENT] [v pigment-body] ... }` after `pigment_map`.
-  std::shared_ptr<const texture::PigmentMap> parse_pigment_map();
+  /// `average` maps may leave out an entry's value, which is then a weight of 1 (POV-Ray 3.7).
+  std::shared_ptr<const texture::PigmentMap> parse_pigment_map(bool average = false);
+  /// A map entry's value after `[`: optional (1) in an `average` map.
+  double parse_map_entry_value(bool average);
 
   // ---- normals (normals.cpp) ----
   struct NormalBuilder;

@@ -10,6 +10,7 @@
 #include "snell/texture/function_pattern.hpp"
 #include "snell/texture/image_pattern.hpp"
 #include "snell/texture/noise_patterns.hpp"
+#include "snell/texture/object_pattern.hpp"
 #include "snell/texture/pigment_pattern.hpp"
 #include "snell/texture/ripple_patterns.hpp"
 #include "snell/texture/slope_pattern.hpp"
@@ -32,9 +33,8 @@ PigmentPtr solid(const material::Rgbft& c) {
 
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
-  static const char* const patterns[] = {"density_file", "facets",     "pavement", "square",
-                                         "tiling",       "triangular", "object",   "aoi",
-                                         "cubic",        "magnet",     "potential"};
+  static const char* const patterns[] = {"density_file", "facets", "pavement", "square", "tiling",
+                                         "triangular",   "aoi",    "cubic",    "magnet", "potential"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -226,10 +226,16 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
   } else if (w == "brick") {
     block = std::make_shared<texture::BrickPattern>();
     defaults = {rgb(0.5, 0.5, 0.5), rgb(0.6, 0.15, 0.15)};
+  } else if (w == "object") {
+    // `object { Obj [A [, B]] }`: A outside the object, B inside.
+    raw_next();
+    expect("{", "object pattern");
+    block = std::make_shared<texture::ObjectPattern>(parse_inside_test());
+    defaults = {rgb(0, 0, 0), rgb(1, 1, 1)};
   } else {
     return false;
   }
-  raw_next();
+  if (w != "object") raw_next();
   b.start_pattern();
   b.brick = w == "brick";
   b.spec.block_pattern = block;
@@ -256,6 +262,7 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
   }
   for (size_t i = b.spec.block_entries.size(); i < defaults.size(); ++i)
     b.spec.block_entries.push_back(solid(defaults[i]));
+  if (w == "object") expect("}", "object pattern");
   return true;
 }
 
@@ -284,7 +291,7 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     // A density_map's entries are colours or densities: read as a pigment map of either.
     raw_next();
     need_value_pattern();
-    b.pigment_entries = parse_pigment_map()->entries();
+    b.pigment_entries = parse_pigment_map(b.special == "average")->entries();
     b.spec.color_map.reset();
   } else if (w == "ramp_wave") {
     set_wave(texture::Wave::ramp);
@@ -333,34 +340,8 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     if (mortar < 0) fail(t.where, "mortar must not be negative");
     b.mortar = mortar;
   } else if (w == "warp") {
-    // `warp { turbulence ... }`: turbulence at this place in the warp list (POV-Ray reference, "Warps").
     raw_next();
-    expect("{", "warp");
-    const Token kind = peek();
-    if (!kind.is_word("turbulence"))
-      fail(kind.where, "warp '" + kind.text + "' is not supported yet (only turbulence)");
-    raw_next();
-    texture::TurbulenceParams params;
-    const Numeric n = parse_numeric();
-    params.amount = n.size == 1 ? math::Vec3{n.x(), n.x(), n.x()} : n.vec3();
-    for (;;) {
-      const Token m = peek();
-      if (m.is_symbol("}")) {
-        raw_next();
-        break;
-      }
-      raw_next();
-      if (m.is_word("octaves"))
-        params.octaves = std::clamp(parse_int("octaves"), 1, 10);
-      else if (m.is_word("omega"))
-        params.omega = parse_float();
-      else if (m.is_word("lambda"))
-        params.lambda = parse_float();
-      else
-        fail(m.where, "unexpected '" + m.text + "' in warp");
-    }
-    if (!b.patterned) return true;  // a plain colour is the same everywhere
-    b.spec.warps.push(std::make_shared<texture::TurbulenceWarp>(params));
+    parse_warp(b);
   } else if (w == "form" || w == "metric" || w == "offset" || w == "solid") {
     raw_next();
     if (b.special != "crackle") fail(t.where, "'" + w + "' is only for the crackle pattern");
@@ -474,7 +455,16 @@ std::shared_ptr<const texture::ColorMap> Parser::parse_color_map() {
   return std::make_shared<texture::ColorMap>(std::move(entries));
 }
 
-std::shared_ptr<const texture::PigmentMap> Parser::parse_pigment_map() {
+double Parser::parse_map_entry_value(bool average) {
+  if (!average) return parse_float();
+  // A colour keyword begins the entry's pigment, not a weight.
+  const Token& t = peek();
+  const bool colour = t.is_word("rgb") || t.is_word("rgbf") || t.is_word("rgbt") || t.is_word("rgbft") ||
+                      t.is_word("color") || t.is_word("colour");
+  return colour || !starts_numeric() ? 1.0 : parse_float();
+}
+
+std::shared_ptr<const texture::PigmentMap> Parser::parse_pigment_map(bool average) {
   if (auto declared = take_declared<std::shared_ptr<const texture::PigmentMap>>()) return *declared;
   const scene::SourceLocation where = peek().where;
   expect("{", "pigment_map");
@@ -491,7 +481,7 @@ std::shared_ptr<const texture::PigmentMap> Parser::parse_pigment_map() {
     }
     if (!t.is_symbol("[")) fail(t.where, "expected '[' or '}' in pigment_map, found '" + t.text + "'");
     raw_next();
-    const double value = parse_float();
+    const double value = parse_map_entry_value(average);
     accept(",");
     PigmentBuilder entry;
     parse_pigment_body(entry, "]");

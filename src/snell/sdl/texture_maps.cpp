@@ -5,6 +5,7 @@
 // texture, entries included (they are applied to the texture itself in materials.cpp).
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
+#include "snell/texture/object_pattern.hpp"
 #include "snell/texture/texture_map.hpp"
 
 namespace snell::sdl {
@@ -12,12 +13,16 @@ namespace snell::sdl {
 bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
   const Token t = peek();
   const std::string& w = t.text;
-  if (w == "checker" || w == "hexagon" || w == "brick") {
+  if (w == "checker" || w == "hexagon" || w == "brick" || w == "object") {
     raw_next();
     b = TexturePatternBuilder{};
     b.active = true;
     b.pattern.start_pattern();
     b.pattern.brick = w == "brick";
+    // `object { Obj texture {outside} texture {inside} }` (object_pattern.hpp).
+    if (w == "object") expect("{", "object pattern");
+    if (w == "object")
+      b.pattern.spec.block_pattern = std::make_shared<texture::ObjectPattern>(parse_inside_test());
     if (w == "checker") b.pattern.spec.block_pattern = std::make_shared<texture::CheckerPattern>();
     if (w == "hexagon") b.pattern.spec.block_pattern = std::make_shared<texture::HexagonPattern>();
     if (w == "brick") b.pattern.spec.block_pattern = std::make_shared<texture::BrickPattern>();
@@ -30,6 +35,7 @@ bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
     }
     if (static_cast<int>(b.blocks.size()) != count)
       fail(t.where, "'" + w + "' in a texture needs " + std::to_string(count) + " texture {} entries");
+    if (w == "object") expect("}", "object pattern");
     return true;
   }
   if (w == "tiles") {
