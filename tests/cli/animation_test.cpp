@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -90,6 +91,26 @@ TEST_F(AnimationTest, VideoWithoutFfmpegWarnsAndKeepsTheFrames) {
   EXPECT_TRUE(fs::exists(dir_ / "v1.png"));
   EXPECT_TRUE(fs::exists(dir_ / "v2.png"));
   EXPECT_FALSE(fs::exists(dir_ / "v.mp4"));
+}
+
+TEST_F(AnimationTest, VideoRunsFfmpegFromPathWithTheFrameSequence) {
+  // A stand-in ffmpeg records its arguments and writes the video file.
+  const fs::path bin = dir_ / "bin";
+  fs::create_directories(bin);
+  std::ofstream(bin / "ffmpeg") << "#!/bin/sh\necho \"$@\" > " << (dir_ / "ffmpeg-args").string()
+                                << "\nfor last; do :; done\ntouch \"$last\"\n";
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  const auto r = test::run_command("env PATH=" + bin.string() + ":/usr/bin:/bin " + SNELL_BINARY + " +I" +
+                                   scene_.string() + " +W32 +H24 +KFI1 +KFF12 +SF11 --fps 30 --video " +
+                                   (dir_ / "v.mp4").string() + " --quiet +O" + (dir_ / "v.png").string());
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "v.mp4"));
+  std::ifstream args_file(dir_ / "ffmpeg-args");
+  std::string args;
+  std::getline(args_file, args);
+  EXPECT_EQ(args, "-y -loglevel error -framerate 30 -start_number 11 -i " + (dir_ / "v%02d.png").string() +
+                      " -frames:v 2 -c:v libx264 -pix_fmt yuv420p " + (dir_ / "v.mp4").string());
 }
 
 TEST_F(AnimationTest, VideoOfAStillIsAUsageError) {
