@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -108,6 +109,16 @@ TEST_F(MpiTest, MoreFramesThanRanksGoToRanksWholeAndMatchOneProcess) {
 
 TEST_F(MpiTest, FewerFramesThanRanksAreTiledAndMatchOneProcess) {
   expect_identical_frames(dir_, 2, "frame 2/2 (frame_number 2, clock 1) -> ");
+}
+
+TEST_F(MpiTest, ASceneErrorInOneWholeFrameEndsTheJobWithItsMessage) {
+  // Only the rank given frame 3 or 4 sees the error; it prints it and aborts the job, nobody waits for it.
+  const fs::path scene = dir_ / "late_error.pov";
+  std::ofstream(scene) << "#if (clock > 0.5) #error \"too late\" #end\nsphere { 0, 1 pigment { rgb 1 } }\n";
+  const auto r = test::run_command("timeout 120 " + kMpirun + SNELL_BINARY + " +I" + scene.string() +
+                                   " +W8 +H8 +KFI1 +KFF4 +O" + (dir_ / "e.png").string());
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("late_error.pov:1:19: error: #error: too late"), std::string::npos) << r.output;
 }
 
 TEST_F(MpiTest, AfterAKilledRankContinueRendersOnlyTheMissingTiles) {
