@@ -13,10 +13,12 @@
 
 #include "cli/checkpoint.hpp"
 #include "cli/distributed.hpp"
+#include "cli/frame_loop.hpp"
 #include "cli/merge_command.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
 #include "cli/render_fingerprint.hpp"
+#include "cli/video.hpp"
 #include "snell/accel/accelerator.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
@@ -44,15 +46,35 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-std::filesystem::path resume_path(const std::filesystem::path& output) {
-  std::filesystem::path p = output;
-  p += ".snell-resume";
-  return p;
+/// Errors are the same on every rank of a distributed render; rank 0 prints them once. A rank rendering
+/// whole frames alone prints its own (`every_rank`).
+void report_error(const char* what, bool every_rank = false) {
+  if (every_rank || distributed::rank() == 0) fmt::print(stderr, "snell: error: {}\n", what);
 }
 
-/// Errors are the same on every rank of a distributed render; rank 0 prints them once.
-void report_error(const char* what) {
-  if (distributed::rank() == 0) fmt::print(stderr, "snell: error: {}\n", what);
+/// Prints the exception being handled and returns its exit code.
+int report_current_exception(bool every_rank = false) {
+  try {
+    throw;
+  } catch (const UsageError& e) {
+    report_error(e.what(), every_rank);
+    return kUsageError;
+  } catch (const sdl::ParseError& e) {
+    if (every_rank || distributed::rank() == 0) fmt::print(stderr, "{}\n", e.what());
+    return kSceneError;
+  } catch (const render::ResumeError& e) {
+    report_error(e.what(), every_rank);
+    return kUsageError;
+  } catch (const io::ImageIoError& e) {
+    report_error(e.what(), every_rank);
+    return kIoError;
+  } catch (const std::invalid_argument& e) {
+    report_error(e.what(), every_rank);
+    return kUsageError;
+  } catch (const std::exception& e) {
+    report_error(e.what(), every_rank);
+    return kIoError;
+  }
 }
 
 std::string version_line() {
@@ -70,6 +92,8 @@ const char* kPovHelp =
     "        [+FN|+FN16|+FE|+FH] [-D] [Declare=NAME=value] [--quiet] [--stats] [--accel NAME]\n"
     "  snell --parse-only scene.pov   parses and builds the scene, prints a summary\n"
     "  +SR/+ER/+SC/+EC partial render, +C continue an interrupted one, --checkpoint S\n"
+    "  +KFI1 +KFF120 (or --frames 1-120) +KI0 +KF1 +KC +SFn +EFn: an animation, out.png -> out001.png...;\n"
+    "  --video out.mp4 [--fps 24] joins the frames with ffmpeg when it is installed\n"
     "  snell merge part1.exr part2.exr -o out.png   joins partial renders\n"
     "  -A / -J turn anti-aliasing / jitter off. Unknown or unsupported flags are warned about, never fatal.\n"
     "Exit codes: 0 ok, 1 scene error, 2 bad command line, 3 output error, 130 interrupted.\n";
@@ -109,6 +133,32 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
                    "finish an interrupted render from its resume file (POV-Ray +C)");
   render->add_option("--checkpoint", o.checkpoint_seconds,
                      "write the resume file every S seconds while rendering");
+  render->add_option_function<std::string>(
+      "--frames",
+      [&o](const std::string& r) { parse_frame_range("--frames", r, o.initial_frame, o.final_frame); },
+      "animation: render frames A-B, out.png -> out1.png... (POV-Ray +KFI/+KFF)");
+  render
+      ->add_option_function<std::vector<double>>(
+          "--clock",
+          [&o](const std::vector<double>& v) {
+            o.initial_clock = v.at(0);
+            o.final_clock = v.at(1);
+          },
+          "animation: clock at the initial and at the final frame (default 0 1; POV-Ray +KI/+KF)")
+      ->expected(2);
+  render->add_flag("--cyclic", o.cyclic,
+                   "animation: the last frame stops one step before the final clock (+KC)");
+  render->add_option_function<std::string>(
+      "--subset",
+      [&o](const std::string& r) {
+        int first = 0, last = 0;
+        parse_frame_range("--subset", r, first, last);
+        o.subset_start = first;
+        o.subset_end = last;
+      },
+      "animation: render only frames A-B of the range (POV-Ray +SF/+EF)");
+  render->add_option("--video", o.video, "animation: join the frames into this video with ffmpeg (.mp4)");
+  render->add_option("--fps", o.fps, "frames per second of --video (default 24)");
   render->add_option("--max-loop", o.max_loop, "most iterations of one #while or #for (default 10 million)");
   return app;
 }
@@ -122,21 +172,12 @@ std::unique_ptr<accel::Accelerator> build_accelerator(const std::string& name, c
   }
 }
 
-int render(CliOptions& o) {
-  validate(o);
-  // Every rank parses and renders; only rank 0 reports and writes.
-  if (distributed::rank() != 0) {
-    o.quiet = true;
-    o.stats = false;
-  }
-  const PixelBounds bounds = render_region(o);
-  install_stop_handlers();
-  if (!o.quiet)
-    for (const std::string& w : o.warnings) fmt::print(stderr, "snell: warning: {}\n", w);
-
-  // Load the image plugin while the scene is parsed and rendered (snell/io/oiio_plugin_abi.hpp); PNG output
-  // does without it (a scene's image maps load it when they are parsed).
-  if (!o.parse_only && io::writes_through_plugin(o.output)) io::preload_image_backend();
+/// One frame (or the still): parse, render, write. The scene is parsed again for every frame, since scenes
+/// branch on clock.
+int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds, const FrameTask& task) {
+  o.output = task.output;
+  o.frame = task.number;
+  o.resume = task.resume;
   const auto t_parse = Clock::now();
   sdl::ParseOptions po;
   po.library_paths = o.library_paths;
@@ -145,17 +186,7 @@ int render(CliOptions& o) {
   po.image_height = o.height;
   po.declares = o.declares;
   po.max_while_iterations = o.max_loop;
-  // One frame of the animation range: its number and clock (POV-Ray's animationprocessing.cpp rules).
-  po.initial_frame = o.initial_frame;
-  po.final_frame = std::max(o.final_frame, o.initial_frame);
-  po.initial_clock = o.initial_clock;
-  po.final_clock = o.final_clock;
-  po.cyclic = o.cyclic;
-  po.clock_on = po.final_frame > po.initial_frame;
-  po.frame_number =
-      po.clock_on ? std::clamp(o.frame > 0 ? o.frame : o.initial_frame, po.initial_frame, po.final_frame) : 0;
-  po.clock = po.clock_on ? po.initial_clock + po.clock_delta() * (po.frame_number - po.initial_frame)
-                         : po.initial_clock;
+  apply_frame(plan, task.number, po);
   const scene::Scene scene = sdl::parse_scene_file(o.input, po);
   const double parse_s = seconds_since(t_parse);
   if (o.parse_only) {
@@ -218,11 +249,12 @@ int render(CliOptions& o) {
   };
 
   const auto t_render = Clock::now();
-  const render::RenderStats result = distributed::render(job, image);
+  const render::RenderStats result =
+      task.whole_frame ? distributed::render_alone(job, image) : distributed::render(job, image);
   const double render_s = seconds_since(t_render);
   progress.finish(render_s);
-  // Other ranks have sent their tiles to rank 0, which writes the image.
-  if (distributed::rank() != 0) return result.cancelled ? kInterrupted : kOk;
+  // Other ranks have sent their tiles to rank 0, which writes the image (a whole frame: this rank).
+  if (!task.whole_frame && distributed::rank() != 0) return result.cancelled ? kInterrupted : kOk;
 
   const auto t_write = Clock::now();
   io::WriteOptions wo;
@@ -266,6 +298,40 @@ int render(CliOptions& o) {
   return kOk;
 }
 
+int render(CliOptions& o) {
+  validate(o);
+  const FramePlan plan = plan_frames(o);
+  if (!o.video.empty() && !plan.animated)
+    throw UsageError("--video needs an animation: a frame range such as --frames 1-24 or +KFI1 +KFF24");
+  if (o.fps <= 0) throw UsageError("--fps must be positive");
+  const bool announce = !o.quiet;
+  // Every rank parses and renders; only rank 0 reports and writes (and, with whole frames, each rank).
+  if (distributed::rank() != 0) {
+    o.quiet = true;
+    o.stats = false;
+  }
+  const PixelBounds bounds = render_region(o);
+  install_stop_handlers();
+  if (!o.quiet)
+    for (const std::string& w : o.warnings) fmt::print(stderr, "snell: warning: {}\n", w);
+
+  // Load the image plugin while the scene is parsed and rendered (snell/io/oiio_plugin_abi.hpp); PNG output
+  // does without it (a scene's image maps load it when they are parsed).
+  if (!o.parse_only && io::writes_through_plugin(o.output)) io::preload_image_backend();
+  const int code = render_frames(o, plan, announce, &g_interrupted, [&](const FrameTask& task) {
+    try {
+      return render_frame(o, plan, bounds, task);
+    } catch (...) {
+      // A rank rendering a frame alone is the only one to see its error: it reports it and ends the job.
+      if (!task.whole_frame || distributed::size() == 1) throw;
+      distributed::abort_all(report_current_exception(/*every_rank=*/true));
+    }
+  });
+  if (code == kOk && !o.video.empty() && !o.parse_only && distributed::rank() == 0)
+    make_video(plan, o.output, o.video, o.fps);
+  return code;
+}
+
 }  // namespace
 
 int run_app(const std::vector<std::string>& args) {
@@ -301,24 +367,8 @@ int run_app(const std::vector<std::string>& args) {
     }
     CliOptions o = parse_pov_arguments(args);
     return render(o);
-  } catch (const UsageError& e) {
-    report_error(e.what());
-    return kUsageError;
-  } catch (const sdl::ParseError& e) {
-    if (distributed::rank() == 0) fmt::print(stderr, "{}\n", e.what());
-    return kSceneError;
-  } catch (const render::ResumeError& e) {
-    report_error(e.what());
-    return kUsageError;
-  } catch (const io::ImageIoError& e) {
-    report_error(e.what());
-    return kIoError;
-  } catch (const std::invalid_argument& e) {
-    report_error(e.what());
-    return kUsageError;
-  } catch (const std::exception& e) {
-    report_error(e.what());
-    return kIoError;
+  } catch (...) {
+    return report_current_exception();
   }
 }
 

@@ -9,6 +9,12 @@
 
 namespace snell::cli {
 
+std::filesystem::path resume_path(const std::filesystem::path& output) {
+  std::filesystem::path p = output;
+  p += ".snell-resume";
+  return p;
+}
+
 Checkpoint::Checkpoint(std::filesystem::path path, uint64_t fingerprint, const io::Image& image,
                        std::vector<render::Tile> done, double interval_seconds)
     : path_(std::move(path)),

@@ -12,6 +12,9 @@
 
 namespace snell::cli {
 
+/// The resume file of the render writing `output`: `out.png.snell-resume`.
+std::filesystem::path resume_path(const std::filesystem::path& output);
+
 class Checkpoint {
  public:
   /// `image` is the render target; `done` the tiles it already holds (from a resume file).

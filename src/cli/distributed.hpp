@@ -4,6 +4,7 @@
 // writes the image; ranks 1..N-1 render the tiles they are given with all their cores. Tiles are
 // self-contained and seeded by pixel, so the image is identical to a single-process render for any N.
 // Built only where MPI is (SNELL_HAVE_MPI); elsewhere these are single-process stand-ins.
+#include <atomic>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -44,6 +45,18 @@ struct Job {
 /// Renders `job` over all ranks into `image` (meaningful on rank 0). Returns the statistics summed over
 /// ranks on rank 0, this rank's own elsewhere.
 render::RenderStats render(const Job& job, io::Image& image);
+
+/// Whole frames over all ranks (frame_loop.hpp): rank 0 hands out frame indices 0..count-1 from a queue
+/// to every rank, itself included; each rank calls render_frame(index) for the frames it gets and writes
+/// them. A frame that does not return 0 (an interruption) stops that rank; `cancel` closes the queue.
+/// Returns the highest exit code of all ranks on rank 0, this rank's own elsewhere.
+int render_frames(int count, const std::atomic<bool>* cancel, const std::function<int(int)>& render_frame);
+
+/// Rank 0's `value`, on every rank.
+int broadcast_from_lead(int value);
+
+/// Ends every rank of the job with `code` (after an error on one rank that the others cannot see).
+[[noreturn]] void abort_all(int code);
 
 /// Hands out the next tile to a render thread, or nothing when there is none left (calls may overlap).
 using TileSource = std::function<std::optional<render::Tile>()>;

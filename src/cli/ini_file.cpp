@@ -125,7 +125,9 @@ bool apply_ini_option(CliOptions& o, const std::string& key_as_written, const st
   } else if (key == "cyclic_animation") {
     o.cyclic = truth(key_as_written, value);
   } else if (key == "subset_start_frame") {
-    o.frame = static_cast<int>(number(key_as_written, value));
+    o.subset_start = number(key_as_written, value);
+  } else if (key == "subset_end_frame") {
+    o.subset_end = number(key_as_written, value);
   } else if (key == "declare") {
     const auto eq = value.find('=');
     if (eq == std::string::npos || eq == 0) throw UsageError("Declare needs NAME=value, got '" + value + "'");

@@ -43,14 +43,21 @@ struct CliOptions {
   double checkpoint_seconds = 0;
   std::vector<std::filesystem::path> library_paths;
   std::map<std::string, double> declares;
-  /// Animation range (+KFI +KFF +KI +KF, ini Initial_Frame...) and the one frame rendered (+SF,
-  /// Subset_Start_Frame; 0: the initial frame). snell renders one frame per run.
+  /// Animation range (+KFI +KFF +KI +KF +KC, `--frames A-B`, ini Initial_Frame...) and the subset of it
+  /// rendered (+SF +EF, Subset_Start_Frame...; below 0: the whole range; between 0 and 1: a fraction, as
+  /// in POV-Ray). Every frame of the subset is rendered (cli/animation.hpp).
   int initial_frame = 1;
   int final_frame = 1;
   double initial_clock = 0;
   double final_clock = 1;
-  int frame = 0;
+  double subset_start = -1;
+  double subset_end = -1;
   bool cyclic = false;
+  /// The frame being rendered (set per frame by the animation loop; 0 for a still).
+  int frame = 0;
+  /// `--video out.mp4`: join the frames with ffmpeg when it is installed; `--fps`: its frame rate.
+  std::filesystem::path video;
+  double fps = 24;
   /// `--max-loop N`: the most iterations one #while or #for may run before the scene is stopped.
   long max_loop = 10'000'000;
   /// Warnings found while reading the command line (unknown or unsupported flags), printed unless quiet.
@@ -66,6 +73,9 @@ std::vector<std::string> expand_ini_files(const std::vector<std::string>& args, 
 
 /// Applies one ini-style `Key=Value` option (also accepted on the command line); false when unknown.
 bool apply_ini_option(CliOptions& options, const std::string& key, const std::string& value);
+
+/// `A-B` or `A` (frames of `--frames`, `--subset`): sets `first` and `last`. Throws UsageError.
+void parse_frame_range(const std::string& flag, const std::string& text, int& first, int& last);
 
 /// Checks values common to both syntaxes and fills in the default output name. Throws UsageError.
 void validate(CliOptions& options);

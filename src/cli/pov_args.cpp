@@ -38,9 +38,8 @@ bool starts_with(const std::string& s, const std::string& prefix) {
 }
 
 /// POV-Ray switches that snell knows but does not implement: accepted with a warning.
-constexpr const char* kUnsupported[] = {"Q",  "AM", "AG", "UA",  "GA", "GD", "GF", "GR",
-                                        "GS", "GW", "K",  "EF",  "UV", "UR", "UF", "UD",
-                                        "UO", "MB", "MV", "RVP", "HT", "HN", "HI"};
+constexpr const char* kUnsupported[] = {"Q",  "AM", "AG", "UA", "GA", "GD", "GF", "GR",  "GS", "GW", "K",
+                                        "UV", "UR", "UF", "UD", "UO", "MB", "MV", "RVP", "HT", "HN", "HI"};
 /// Known switches without an effect on a batch render: accepted silently.
 constexpr const char* kIgnored[] = {"D", "P", "V", "X", "GP"};
 
@@ -77,6 +76,13 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
       } else if (name == "--max-loop") {
         o.max_loop = parse_int(name, eq == std::string::npos ? next_value(name) : value);
         if (o.max_loop < 1) throw UsageError("--max-loop needs a positive number");
+      } else if (name == "--frames") {
+        parse_frame_range(name, eq == std::string::npos ? next_value(name) : value, o.initial_frame,
+                          o.final_frame);
+      } else if (name == "--video") {
+        o.video = eq == std::string::npos ? next_value(name) : value;
+      } else if (name == "--fps") {
+        o.fps = parse_double(name, eq == std::string::npos ? next_value(name) : value);
       } else if (name == "--accel") {
         o.accel = eq == std::string::npos ? next_value(name) : value;
       } else {
@@ -129,7 +135,9 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
     } else if (starts_with(key, "KF") && key.size() > 2) {
       o.final_clock = parse_double(arg, rest_after(2));
     } else if (starts_with(key, "SF") && key.size() > 2) {
-      o.frame = parse_int(arg, rest_after(2));
+      o.subset_start = parse_double(arg, rest_after(2));
+    } else if (starts_with(key, "EF") && key.size() > 2) {
+      o.subset_end = parse_double(arg, rest_after(2));
     } else if (starts_with(key, "WT")) {
       o.threads = parse_int(arg, rest_after(2));
     } else if (key[0] == 'W' && key.size() > 1) {

@@ -7,8 +7,11 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
+
+#include <fmt/core.h>
 
 #include "run_command.hpp"
 #include "snell/io/image_file.hpp"
@@ -78,6 +81,74 @@ TEST_F(MpiTest, AKilledRankEndsTheJobWithAnErrorNotAHang) {
   EXPECT_NE(r.code, 0) << r.output;
   EXPECT_NE(r.code, 124) << "the job hung after a rank died";
   EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+/// Renders frames 1..`frames` of the moving sphere alone and with three ranks; each frame's pixels must
+/// match.
+void expect_identical_frames(const fs::path& dir, int frames, const std::string& expected_mode) {
+  const fs::path scene = fs::path(SNELL_SOURCE_DIR) / "tests/cli/moving_sphere.pov";
+  const std::string args =
+      " +I" + scene.string() + " +W64 +H48 +A0.3 +KFI1 +KFF" + std::to_string(frames) + " +O";
+  const auto single =
+      test::run_command(std::string(SNELL_BINARY) + args + (dir / "single.exr").string() + " --quiet");
+  ASSERT_EQ(single.code, 0) << single.output;
+  const auto mpi = test::run_command(kMpirun + SNELL_BINARY + args + (dir / "mpi.exr").string());
+  ASSERT_EQ(mpi.code, 0) << mpi.output;
+  EXPECT_NE(mpi.output.find(expected_mode), std::string::npos) << mpi.output;
+  for (int f = 1; f <= frames; ++f) {
+    EXPECT_EQ(io::read_image(dir / fmt::format("single{}.exr", f)).rgb,
+              io::read_image(dir / fmt::format("mpi{}.exr", f)).rgb)
+        << "frame " << f;
+  }
+}
+
+TEST_F(MpiTest, MoreFramesThanRanksGoToRanksWholeAndMatchOneProcess) {
+  // Four frames on three ranks: whole frames from rank 0's queue ("on rank N" in the frame lines).
+  expect_identical_frames(dir_, 4, " on rank ");
+}
+
+TEST_F(MpiTest, FewerFramesThanRanksAreTiledAndMatchOneProcess) {
+  expect_identical_frames(dir_, 2, "frame 2/2 (frame_number 2, clock 1) -> ");
+}
+
+TEST_F(MpiTest, ASceneErrorInOneWholeFrameEndsTheJobWithItsMessage) {
+  // Only the rank given frame 3 or 4 sees the error; it prints it and aborts the job, nobody waits for it.
+  const fs::path scene = dir_ / "late_error.pov";
+  std::ofstream(scene) << "#if (clock > 0.5) #error \"too late\" #end\nsphere { 0, 1 pigment { rgb 1 } }\n";
+  const auto r = test::run_command("timeout 120 " + kMpirun + SNELL_BINARY + " +I" + scene.string() +
+                                   " +W8 +H8 +KFI1 +KFF4 +O" + (dir_ / "e.png").string());
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("late_error.pov:1:19: error: #error: too late"), std::string::npos) << r.output;
+}
+
+TEST_F(MpiTest, AfterAKilledRankContinueRendersOnlyTheMissingTiles) {
+  const fs::path scene = fs::path(SNELL_SOURCE_DIR) / "scenes/showcase.pov";
+  const std::string render = kMpirun + SNELL_BINARY + " +I" + scene.string() +
+                             " +W160 +H120 +A0.1 --threads 1 --checkpoint 0.05 +O" +
+                             (dir_ / "out.exr").string();
+  const fs::path resume_file = dir_ / "out.exr.snell-resume";
+  std::thread killer([&] {
+    // Once rank 0 has checkpointed finished tiles, kill the newest rank.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!fs::exists(resume_file) && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    test::run_command("pkill -KILL -n -f '^" + std::string(SNELL_BINARY) + " .*" +
+                      (dir_ / "out.exr").string() + "'");
+  });
+  const auto killed = test::run_command("timeout 120 " + render + " --quiet");
+  killer.join();
+  if (killed.code == 0) GTEST_SKIP() << "the render finished before a rank was killed";
+  ASSERT_NE(killed.code, 124) << "the job hung after a rank died";
+  ASSERT_TRUE(fs::exists(resume_file)) << killed.output;
+
+  const auto resumed = test::run_command("timeout 120 " + render + " +C");
+  ASSERT_EQ(resumed.code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("continuing: "), std::string::npos) << resumed.output;
+  EXPECT_EQ(resumed.output.find("continuing: 0 tiles"), std::string::npos) << resumed.output;
+  const auto single = test::run_command(std::string(SNELL_BINARY) + " +I" + scene.string() +
+                                        " +W160 +H120 +A0.1 --quiet +O" + (dir_ / "single.exr").string());
+  ASSERT_EQ(single.code, 0) << single.output;
+  EXPECT_EQ(io::read_image(dir_ / "out.exr").rgb, io::read_image(dir_ / "single.exr").rgb);
 }
 
 }  // namespace
