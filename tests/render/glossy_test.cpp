@@ -139,6 +139,34 @@ TEST(GlossyTest, RoughRefractionScattersAroundTheSnellDirection) {
   EXPECT_GT(spread_large, 10 * spread_small);
 }
 
+TEST(GlossyTest, RoughSurfaceStillReflectsTotallyPastTheCriticalAngle) {
+  // From glass (eta 1.5) at 60 degrees, past the 41.81 degree critical angle, a microfacet refracts only
+  // when tilted by more than 18 degrees towards the ray: for GGX, P(tan theta_m > t) = alpha^2 / (alpha^2 +
+  // t^2), 2.3% at alpha 0.05 (fewer still among visible normals). At 30 degrees, 11.8 degrees of tilt: 5.4%.
+  const Vec3 steep(std::sin(math::radians(60)), -std::cos(math::radians(60)), 0);
+  const Vec3 gentle(0.5, -std::sqrt(0.75), 0);
+  math::Pcg32 rng(17);
+  const int n = 4000;
+  int reflected_steep = 0, reflected_gentle = 0;
+  for (int k = 0; k < n; ++k) {
+    const RoughSample t =
+        sample_rough_transmission(surface(steep, 0.05), 1.5, rng.next_double(), rng.next_double());
+    if (t.reflected) {
+      ++reflected_steep;
+      if (t.weight > 0) {
+        EXPECT_GT(t.direction.y, 0);
+      }
+    } else if (t.weight > 0) {
+      EXPECT_LT(t.direction.y, 0);
+    }
+    if (sample_rough_transmission(surface(gentle, 0.05), 1.5, rng.next_double(), rng.next_double()).reflected)
+      ++reflected_gentle;
+  }
+  EXPECT_GT(reflected_steep, 0.977 * n);
+  EXPECT_LT(reflected_gentle, 0.054 * n);
+  EXPECT_GT(reflected_gentle, 0);
+}
+
 TEST(GlossyTest, SampleCountIsFullOnlyWhereCameraRaysHit) {
   EXPECT_EQ(rough_sample_count(0, 1), 8);
   EXPECT_EQ(rough_sample_count(32, 1), 32);
