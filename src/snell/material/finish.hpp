@@ -23,6 +23,13 @@ struct Finish {
   double reflection_falloff = 1;
   double reflection_exponent = 1;
   double reflection_metallic = 0;
+  /// snell extension `reflection { ... blur A samples N }`: GGX alpha of glossy reflection (0 = mirror) and
+  /// rays per camera-ray hit (0 = the default, render/glossy.hpp).
+  double reflection_blur = 0;
+  int reflection_samples = 0;
+  /// snell extension `transmission { blur A samples N }`: frosted refraction, the same way.
+  double transmission_blur = 0;
+  int transmission_samples = 0;
   bool conserve_energy = false;
   /// Whether `ambient` was given explicitly (3.7: then it overrides, else emission/ambient rules apply).
   bool ambient_set = false;

@@ -5,6 +5,7 @@
 
 #include "snell/render/area_light.hpp"
 #include "snell/render/fog.hpp"
+#include "snell/render/glossy.hpp"
 #include "snell/render/light_ray.hpp"
 #include "snell/render/media.hpp"
 #include "snell/render/optics.hpp"
@@ -258,10 +259,25 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
       next.push(object);
     }
     Color through;
+    Color through_filter = filter;
     if (std::fabs(eta - 1) < kEpsilon) {
       ++context.counters.refracted;
       through = trace({offset_origin(sp.point, -sp.raw_normal), ray.direction, ray.time}, RayKind::refraction,
                       level + 1, t_weight, next, context);
+    } else if (f.transmission_blur > 0) {
+      // Frosted glass (render/glossy.hpp): microfacets past their critical angle reflect, unfiltered.
+      tir = !refract(ray.direction, sp.normal, eta);
+      const RoughTransmission rough = rough_transmission(
+          {ray.direction, sp.normal, sp.raw_normal, f.transmission_blur}, eta,
+          rough_sample_count(f.transmission_samples, level), context.rng,
+          [&](const Vec3& dir) {
+            ++context.counters.refracted;
+            return trace({offset_origin(sp.point, -sp.raw_normal), dir, ray.time}, RayKind::refraction,
+                         level + 1, t_weight, next, context);
+          },
+          [&](const Vec3& dir) { return trace_reflection(sp, dir, level, t_weight, inside, context); });
+      through = rough.refracted * filter + rough.reflected;
+      through_filter = Color(1);
     } else if (auto dir = refract(ray.direction, sp.normal, eta)) {
       ++context.counters.refracted;
       through = trace({offset_origin(sp.point, -sp.raw_normal), normalize(*dir), ray.time},
@@ -283,7 +299,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
         fade = fc + (Color(1) - fc) / a;
       }
     }
-    result += tir ? fade * through : fade * through * filter;
+    result += tir ? fade * through : fade * through * through_filter;
   }
 
   if (!tir && f.reflects() && !reflectivity.is_black()) {
@@ -296,13 +312,24 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
 Color WhittedIntegrator::reflect(const ShadingPoint& sp, int level, double weight,
                                  const InteriorStack& inside, TraceContext& context) const {
   const Vec3& d = sp.ray->direction;
+  if (sp.finish->reflection_blur > 0)
+    return glossy_reflection(
+        {d, sp.normal, sp.raw_normal, sp.finish->reflection_blur},
+        rough_sample_count(sp.finish->reflection_samples, level), context.rng,
+        [&](const Vec3& r) { return trace_reflection(sp, r, level, weight, inside, context); });
   Vec3 r = math::reflect(d, sp.normal);
   // A perturbed normal can send the ray into the surface; fold it back as POV-Ray does (trace.cpp,
   // ComputeReflection, "Reflection bugfix").
   const double n = dot(r, sp.raw_normal);
   if (n < 0) r = dot(r, sp.normal) < 0 ? math::reflect(d, sp.raw_normal) : r - 2 * n * sp.raw_normal;
+  return trace_reflection(sp, normalize(r), level, weight, inside, context);
+}
+
+Color WhittedIntegrator::trace_reflection(const ShadingPoint& sp, const Vec3& direction, int level,
+                                          double weight, const InteriorStack& inside,
+                                          TraceContext& context) const {
   ++context.counters.reflected;
-  return trace({offset_origin(sp.point, sp.raw_normal), normalize(r), sp.ray->time}, RayKind::reflection,
+  return trace({offset_origin(sp.point, sp.raw_normal), direction, sp.ray->time}, RayKind::reflection,
                level + 1, weight, inside, context);
 }
 

@@ -46,8 +46,12 @@ class WhittedIntegrator final : public Integrator {
   /// Light reaching `point` from direction `dir` within `distance`, tinted by transparent blockers.
   math::Color shadow_filter(const math::Vec3& point, const math::Vec3& normal, const math::Vec3& dir,
                             double distance, math::Color light, TraceContext& context) const;
+  /// Mirror reflection, or glossy reflection when the finish has `blur`.
   math::Color reflect(const ShadingPoint& sp, int level, double weight, const InteriorStack& inside,
                       TraceContext& context) const;
+  /// Colour seen along a reflected ray leaving the shading point in unit `direction`.
+  math::Color trace_reflection(const ShadingPoint& sp, const math::Vec3& direction, int level, double weight,
+                               const InteriorStack& inside, TraceContext& context) const;
 
   const scene::Scene& scene_;
   const accel::Accelerator& accel_;

@@ -133,6 +133,7 @@ void Parser::parse_reflection(material::Finish& f) {
         f.reflection_metallic = starts_numeric() ? parse_float() : 1;
         continue;
       }
+      if (parse_rough_item(w, f.reflection_blur, f.reflection_samples)) continue;
     }
     if (starts_numeric()) {
       // `{ max }` or `{ min, max }`: a single colour is both (POV-Ray 3.7 "reflection").
@@ -192,6 +193,8 @@ material::Finish Parser::parse_finish_block(const material::Finish& base) {
       f.metallic = starts_numeric() ? parse_float() : 1;
     } else if (w == "reflection") {
       parse_reflection(f);
+    } else if (w == "transmission") {
+      parse_transmission(f);
     } else if (w == "reflection_exponent") {
       f.reflection_exponent = parse_float();
     } else if (w == "conserve_energy") {

@@ -251,6 +251,10 @@ class Parser {
   std::shared_ptr<const material::Texture> parse_layered_textures();
   std::shared_ptr<const material::Material> parse_material_block();
   void parse_reflection(material::Finish& finish);
+  /// snell's `blur A` or `samples N` inside reflection/transmission when `word` is one (rough_finish.cpp).
+  bool parse_rough_item(const std::string& word, double& blur, int& samples);
+  /// snell's `transmission { blur A samples N }` in a finish (rough_finish.cpp).
+  void parse_transmission(material::Finish& finish);
   /// `translate v`, `rotate v`, `scale v`, `matrix <..>`, `transform {..}` when one is next.
   std::optional<math::Transform> parse_transform_item();
   math::Transform parse_transform_block();
