@@ -337,6 +337,29 @@ Numeric Parser::parse_and() {
 }
 
 Numeric Parser::parse_comparison() {
+  // Strings compare too (POV-Ray's Parse_Rel_String_Term): `#if (Name != "")`, by character codes.
+  if (starts_string()) {
+    const std::string left = parse_string();
+    const Token op = raw_next();
+    const std::string right = parse_string();
+    const int c = left.compare(right);
+    bool r = false;
+    if (op.is_symbol("<"))
+      r = c < 0;
+    else if (op.is_symbol("<="))
+      r = c <= 0;
+    else if (op.is_symbol("="))
+      r = c == 0;
+    else if (op.is_symbol("!="))
+      r = c != 0;
+    else if (op.is_symbol(">"))
+      r = c > 0;
+    else if (op.is_symbol(">="))
+      r = c >= 0;
+    else
+      fail(op.where, "expected a comparison after a string, found '" + op.text + "'");
+    return Numeric::of(r ? 1 : 0);
+  }
   Numeric a = parse_additive();
   for (;;) {
     const Token& t = peek_after_value();
@@ -646,7 +669,8 @@ Numeric Parser::parse_function(const Token& name) {
   if (f == "dimensions" || f == "dimension_size") return parse_array_function(name);
   if (f == "seed" || f == "rand") return parse_random_function(name);
   if (is_numeric_string_function(f)) return parse_string_query(name);
-  if (f == "trace" || f == "min_extent" || f == "max_extent" || f == "inside") return parse_object_query(name);
+  if (f == "trace" || f == "min_extent" || f == "max_extent" || f == "inside")
+    return parse_object_query(name);
   bool known = false;
   for (const char* k : functions) known = known || f == k;
   if (!known) fail(name.where, "unknown identifier '" + f + "'");

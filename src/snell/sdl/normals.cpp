@@ -4,7 +4,9 @@
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
 #include "snell/texture/average_normal.hpp"
+#include "snell/texture/block_normals.hpp"
 #include "snell/texture/image_pattern.hpp"
+#include "snell/texture/object_pattern.hpp"
 #include "snell/texture/pattern_normal.hpp"
 
 namespace snell::sdl {
@@ -19,6 +21,8 @@ struct Parser::NormalBuilder {
   double accuracy = 0.02;
   std::optional<texture::SlopeMap> slope_map;
   std::vector<std::pair<double, NormalPtr>> normal_map;
+  /// `checker normal {A} normal {B}`: one normal per block.
+  std::vector<NormalPtr> block_entries;
 
   void start_from(const NormalPtr& normal) {
     *this = NormalBuilder{};
@@ -43,7 +47,10 @@ struct Parser::NormalBuilder {
   NormalPtr build() const {
     if (!pattern.patterned) return plain;
     if (pattern.special == "average") return std::make_shared<texture::AverageNormal>(normal_map);
-    const texture::PatternSpec ps = pattern.build_spec();
+    texture::PatternSpec ps = pattern.build_spec();
+    if (ps.block_pattern && !block_entries.empty())
+      return std::make_shared<texture::BlockNormal>(ps.block_pattern, ps.warps, block_entries);
+    if (ps.block_pattern) ps.value_pattern = std::make_shared<texture::BlockValuePattern>(ps.block_pattern);
     texture::NormalSpec spec;
     spec.pattern = ps.value_pattern;
     spec.wave = ps.wave;
@@ -88,8 +95,34 @@ void Parser::parse_normal_body(NormalBuilder& b, const char* closer) {
       b.start_from(parse_normal_block());
       continue;
     }
-    if (w == "checker" || w == "hexagon" || w == "brick")
-      fail(t.where, "block pattern '" + w + "' in a normal is not supported yet");
+    if (w == "checker" || w == "hexagon" || w == "brick" || w == "object") {
+      // Normals may follow, one per block (inside the braces for `object { Obj normal {A} normal {B} }`);
+      // brick's size and mortar come later as modifiers.
+      raw_next();
+      b.pattern.start_pattern();
+      b.pattern.brick = w == "brick";
+      std::shared_ptr<const texture::BlockPattern> blocks;
+      if (w == "object") {
+        expect("{", "object pattern");
+        blocks = std::make_shared<texture::ObjectPattern>(parse_inside_test());
+      } else if (w == "checker") {
+        blocks = std::make_shared<texture::CheckerPattern>();
+      } else if (w == "hexagon") {
+        blocks = std::make_shared<texture::HexagonPattern>();
+      } else {
+        blocks = std::make_shared<texture::BrickPattern>();
+      }
+      b.pattern.spec.block_pattern = blocks;
+      b.block_entries.clear();
+      while (peek().is_word("normal")) {
+        raw_next();
+        b.block_entries.push_back(parse_normal_block());
+        accept(",");
+      }
+      if (w == "object") expect("}", "object pattern");
+      if (b.block_entries.empty() && starts_numeric()) b.bump_size = parse_float();
+      continue;
+    }
     if (parse_pattern_type(b.pattern)) {
       accept(",");  // `gradient x, 0.5`
       if (starts_numeric()) b.bump_size = parse_float();
