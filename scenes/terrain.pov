@@ -4,7 +4,7 @@
 // snell render scenes/terrain.pov -w 320 -h 240
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
-camera { location <0.5, 0.75, -0.55> look_at <0.5, 0.12, 0.45> angle 60 }
+camera { location <0.15, 0.42, 0.05> look_at <0.55, 0.12, 0.6> angle 65 }
 light_source { <-3, 4, -1> color rgb 1.2 }
 sky_sphere { pigment { gradient y color_map { [0 color rgb <0.85, 0.9, 1>] [0.4 color rgb <0.4, 0.6, 0.95>] } } }
 
@@ -21,4 +21,4 @@ height_field {
   texture { gradient y texture_map { [0 Lowland] [0.68 Lowland] [0.72 Highland] [1 Highland] } }
   scale <1, 0.3, 1>
 }
-plane { y, 0.1 pigment { color rgbf <0.2, 0.4, 0.55, 0.5> } finish { reflection 0.3 specular 0.5 } }
+plane { y, 0.1 pigment { color rgbf <0.1, 0.3, 0.5, 0.3> } finish { reflection 0.25 specular 0.6 } }
