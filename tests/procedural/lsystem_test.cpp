@@ -181,6 +181,17 @@ TEST(LSystem, ErrorsAndTheLengthLimit) {
     EXPECT_NE(std::string(e.what()).find("iteration 7"), std::string::npos);
   }
   EXPECT_THROW(interpret(parse_modules("F]"), {}), LSystemError);
+  // A string that stops growing still has bounded work, and parameters count against the limit too.
+  s.axiom = std::string(1000, 'F');
+  s.rules = {{"F", "F"}};
+  s.iterations = 1000;
+  s.max_length = 10000;
+  EXPECT_THROW(generate_lsystem(s), LSystemError);
+  s.axiom = "A";
+  s.rules = {{"A", "AA(1,2,3,4,5,6,7,8,9,10)A"}};  // 10 parameters per added module
+  s.iterations = 20;
+  s.max_length = 100000;
+  EXPECT_THROW(generate_lsystem(s), LSystemError);
   EXPECT_THROW(grow("F", {{"FG", "F"}}, 1), LSystemError);
   EXPECT_THROW(grow("F", {{"F", "F(1"}}, 1), LSystemError);
   EXPECT_THROW(grow("F", {{"F", "F", 0}}, 1), LSystemError);

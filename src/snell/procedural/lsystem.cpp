@@ -153,7 +153,14 @@ ModuleString generate_lsystem(const LSystemSettings& settings) {
   ModuleString current = parse_modules(settings.axiom);
   std::vector<const CompiledRule*> matching;
   std::vector<double> values;
+  // Bounds on memory (parameters) and time (modules rewritten over all iterations, as a string that stops
+  // growing may still be rewritten up to 1000 times).
+  const std::size_t max_parameters = 2 * settings.max_length, max_work = 10 * settings.max_length;
+  std::size_t work = 0;
   for (int step = 0; step < settings.iterations; ++step) {
+    if ((work += current.size()) > max_work)
+      throw LSystemError("the L-system rewrites more than " + std::to_string(max_work) +
+                         " modules over its iterations (10 x max_length); use fewer iterations");
     ModuleString next;
     for (std::size_t i = 0; i < current.size(); ++i) {
       const char symbol = current.symbol(i);
@@ -184,10 +191,10 @@ ModuleString generate_lsystem(const LSystemSettings& settings) {
           next.push_back(m.symbol, values);
         }
       }
-      if (next.size() > settings.max_length)
+      if (next.size() > settings.max_length || next.parameter_count() > max_parameters)
         throw LSystemError("the L-system string passes " + std::to_string(settings.max_length) +
-                           " modules at iteration " + std::to_string(step + 1) + " of " +
-                           std::to_string(settings.iterations) +
+                           " modules (or twice as many parameters) at iteration " + std::to_string(step + 1) +
+                           " of " + std::to_string(settings.iterations) +
                            "; use fewer iterations or raise max_length");
     }
     current = std::move(next);

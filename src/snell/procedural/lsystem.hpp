@@ -24,6 +24,7 @@ class ModuleString {
   char symbol(std::size_t i) const { return symbols_[i]; }
   std::span<const double> parameters(std::size_t i) const;
   const std::string& symbols() const { return symbols_; }
+  std::size_t parameter_count() const { return params_.size(); }
   void push_back(char symbol, std::span<const double> parameters = {});
   /// Bytes held, for memory checks.
   std::size_t bytes() const;
@@ -50,7 +51,8 @@ struct LSystemSettings {
   std::vector<LSystemRule> rules;
   int iterations = 0;
   std::uint64_t seed = 0;
-  /// The generated string may not grow past this many modules (bounded memory).
+  /// The generated string may not grow past this many modules, nor twice as many parameters (bounded
+  /// memory), and at most 10 times as many modules are rewritten over all iterations (bounded time).
   std::size_t max_length = 20'000'000;
 };
 
