@@ -1,5 +1,7 @@
-// Mariano's bush (Fractint lsystem library; ABoP Fig. 1.24c): F=FF-[-F+F+F]+[+F-F-F], 22.5 degrees, 4
-// iterations, drawn as tapered round branches. The L-system grows in the xy plane from the origin up +y.
+// Left: Mariano's bush (Fractint lsystem library; ABoP Fig. 1.24c): F=FF-[-F+F+F]+[+F-F-F], 22.5 degrees,
+// 4 iterations, drawn as tapered round branches; it grows in the xy plane from the origin up +y.
+// Right: a stochastic 3D bush (after ABoP Fig. 1.27, with pitch and roll added): each F picks one of three
+// rules with equal probability from the seed, so another seed grows another bush of the same kind.
 // snell render scenes/bush.pov -w 320 -h 240
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -16,5 +18,19 @@ lsystem {
   iterations 4
   width 1.2 taper 0.65
   pigment { color rgb <0.25, 0.45, 0.12> }
-  scale 0.3 translate -2*x
+  scale 0.3 translate -4*x
+}
+
+lsystem {
+  axiom "+(90)F"
+  rule "F" "F[+F]F[-F]F" probability 1
+  rule "F" "F[+F]F" probability 1
+  rule "F" "F[-F]\\F" probability 1
+  angle 28
+  iterations 5
+  seed 3
+  width 0.12 taper 0.75
+  step 0.1
+  pigment { color rgb <0.45, 0.3, 0.15> }
+  rotate 20*y translate 4.5*x
 }
