@@ -92,6 +92,8 @@ bool on_outer_surface(const Piece& k, int piece, const Vec3& p) {
 
 BranchSet::BranchSet(std::span<const BranchInput> branches) {
   std::vector<Bounds3> boxes;
+  boxes.reserve(branches.size());
+  cones_.reserve(branches.size());
   for (const BranchInput& in : branches) {
     const double length = std::sqrt(length_squared(in.b - in.a));
     if (!(in.r0 >= 0 && in.r1 >= 0) || (length == 0 && std::max(in.r0, in.r1) == 0)) continue;
@@ -109,11 +111,23 @@ BranchSet::BranchSet(std::span<const BranchInput> branches) {
   }
   if (cones_.empty()) throw std::invalid_argument("the L-system draws no branches");
   bvh_ = std::make_unique<CompactBvh>(boxes);
-  // Store the cones in the tree's order, so its leaves index them directly.
-  std::vector<RoundCone> ordered;
-  ordered.reserve(cones_.size());
-  for (const std::uint32_t i : bvh_->order()) ordered.push_back(cones_[i]);
-  cones_ = std::move(ordered);
+  boxes = {};
+  // Store the cones in the tree's order, so its leaves index them directly: permute in place, cycle by
+  // cycle (slot i takes cone order[i]), marking finished slots in a bit per cone.
+  const std::vector<std::uint32_t>& order = bvh_->order();
+  std::vector<bool> done(cones_.size(), false);
+  for (std::size_t start = 0; start < cones_.size(); ++start) {
+    if (done[start]) continue;
+    const RoundCone first = cones_[start];
+    std::size_t slot = start;
+    while (order[slot] != start) {
+      cones_[slot] = cones_[order[slot]];
+      done[slot] = true;
+      slot = order[slot];
+    }
+    cones_[slot] = first;
+    done[slot] = true;
+  }
   bvh_->drop_order();
 }
 

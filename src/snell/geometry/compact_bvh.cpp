@@ -15,10 +15,8 @@ CompactBvh::CompactBvh(std::span<const math::Bounds3> boxes) {
   order_.resize(boxes.size());
   std::iota(order_.begin(), order_.end(), 0u);
   if (boxes.empty()) return;
-  std::vector<math::Vec3> centroids(boxes.size());
-  for (std::size_t i = 0; i < boxes.size(); ++i) centroids[i] = boxes[i].center();
   nodes_.reserve(2 * boxes.size() / kLeafSize + 1);
-  build(boxes, centroids, 0, static_cast<std::uint32_t>(boxes.size()));
+  build(boxes, 0, static_cast<std::uint32_t>(boxes.size()));
   nodes_.shrink_to_fit();
 }
 
@@ -30,14 +28,14 @@ math::Bounds3 CompactBvh::bounds() const {
 
 // Median splits halve the range each level, so the depth is log2(n / 4) + 1: under 64 for any n that fits
 // in 32 bits, which bounds traverse()'s stack.
-std::uint32_t CompactBvh::build(std::span<const math::Bounds3> boxes, std::vector<math::Vec3>& centroids,
-                                std::uint32_t begin, std::uint32_t end) {
+std::uint32_t CompactBvh::build(std::span<const math::Bounds3> boxes, std::uint32_t begin,
+                                std::uint32_t end) {
   const auto index = static_cast<std::uint32_t>(nodes_.size());
   nodes_.emplace_back();
   math::Bounds3 box, centre_box;
   for (std::uint32_t i = begin; i < end; ++i) {
     box.unite(boxes[order_[i]]);
-    centre_box.unite(centroids[order_[i]]);
+    centre_box.unite(boxes[order_[i]].center());
   }
   Node node{};
   for (int a = 0; a < 3; ++a) {
@@ -55,9 +53,12 @@ std::uint32_t CompactBvh::build(std::span<const math::Bounds3> boxes, std::vecto
   }
   const std::uint32_t mid = begin + (end - begin) / 2;
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                   [&](std::uint32_t p, std::uint32_t q) { return centroids[p][axis] < centroids[q][axis]; });
-  build(boxes, centroids, begin, mid);
-  node.offset = build(boxes, centroids, mid, end);
+                   [&](std::uint32_t p, std::uint32_t q) {
+                     // Twice the centroid: no centroid array is kept (memory for millions of primitives).
+                     return boxes[p].lo[axis] + boxes[p].hi[axis] < boxes[q].lo[axis] + boxes[q].hi[axis];
+                   });
+  build(boxes, begin, mid);
+  node.offset = build(boxes, mid, end);
   node.count = 0;
   nodes_[index] = node;
   return index;

@@ -41,8 +41,7 @@ class CompactBvh {
   };
   static_assert(sizeof(Node) == 32);
 
-  std::uint32_t build(std::span<const math::Bounds3> boxes, std::vector<math::Vec3>& centroids,
-                      std::uint32_t begin, std::uint32_t end);
+  std::uint32_t build(std::span<const math::Bounds3> boxes, std::uint32_t begin, std::uint32_t end);
   /// Entry distance of the ray into the node's box within [t0, t1], or a negative value when it misses.
   static double enter(const Node& n, const math::Vec3& o, const math::Vec3& inv, double t0, double t1);
 

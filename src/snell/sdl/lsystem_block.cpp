@@ -39,16 +39,25 @@ std::shared_ptr<const GeneratedPlant> cached_plant(const std::string& key,
 }
 
 GeneratedPlant grow(const procedural::LSystemSettings& lsystem, const procedural::TurtleSettings& turtle) {
-  const procedural::TurtleResult drawn = procedural::interpret(procedural::generate_lsystem(lsystem), turtle);
-  std::vector<std::vector<geometry::BranchInput>> by_colour;
+  procedural::TurtleResult drawn = procedural::interpret(procedural::generate_lsystem(lsystem), turtle);
+  // Exact sizes first, so no vector holds the slack of doubling growth.
+  std::vector<std::size_t> counts;
   for (const procedural::TurtleSegment& s : drawn.segments) {
-    if (s.colour >= by_colour.size()) by_colour.resize(s.colour + 1u);
+    if (s.colour >= counts.size()) counts.resize(s.colour + 1u, 0);
+    ++counts[s.colour];
+  }
+  std::vector<std::vector<geometry::BranchInput>> by_colour(counts.size());
+  for (std::size_t c = 0; c < counts.size(); ++c) by_colour[c].reserve(counts[c]);
+  for (const procedural::TurtleSegment& s : drawn.segments) {
     by_colour[s.colour].push_back(
         {math::Vec3(s.a[0], s.a[1], s.a[2]), math::Vec3(s.b[0], s.b[1], s.b[2]), s.r0, s.r1});
   }
+  drawn.segments = {};  // each copy is freed once it is used: a million branches pass through three forms
   GeneratedPlant plant;
-  for (const auto& branches : by_colour)
+  for (auto& branches : by_colour) {
     plant.branches.push_back(branches.empty() ? nullptr : shapes::branch_set(branches));
+    branches = {};
+  }
   plant.leaves = drawn.leaves;
   return plant;
 }
