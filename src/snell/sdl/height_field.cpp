@@ -84,7 +84,7 @@ ParsedObject Parser::parse_height_field(const Token& keyword) {
     } catch (const function::FunctionError& e) {
       fail(source.where, e.what());
     }
-  } else {
+  } else if (!parse_terrain_if_any(grid)) {  // diamond_square { }, fbm { }... (terrain_block.cpp)
     if (is_image_type(source)) raw_next();
     const Token name = peek();
     const std::string file = parse_string();

@@ -31,7 +31,7 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
       w == "blob" || w == "mesh" || w == "mesh2" || w == "light_source" || w == "object" ||
       w == "isosurface" || w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" ||
-      w == "julia_fractal") {
+      w == "julia_fractal" || w == "lsystem") {
     raw_next();
     return parse_object(t);
   }
@@ -74,6 +74,8 @@ ParsedObject Parser::parse_object(const Token& keyword) {
     o = parse_bicubic_patch(keyword);
   } else if (w == "julia_fractal") {
     o = parse_julia_fractal(keyword);
+  } else if (w == "lsystem") {
+    o = parse_lsystem(keyword);
   } else if (w == "object") {
     expect("{", "object");
     const Token& inner = peek();

@@ -18,6 +18,10 @@
 #include "snell/sdl/parse.hpp"
 #include "snell/sdl/value.hpp"
 
+namespace snell::geometry {
+struct HeightGrid;
+}
+
 namespace snell::sdl {
 
 class Parser {
@@ -316,8 +320,11 @@ class Parser {
   ParsedObject parse_isosurface(const Token& keyword);
   ParsedObject parse_superellipsoid(const Token& keyword);
   ParsedObject parse_height_field(const Token& keyword);
+  /// terrain_block.cpp: reads `diamond_square { }`, `fbm { }`... into `grid`; false when none is next.
+  bool parse_terrain_if_any(geometry::HeightGrid& grid);
   ParsedObject parse_bicubic_patch(const Token& keyword);
   ParsedObject parse_julia_fractal(const Token& keyword);
+  ParsedObject parse_lsystem(const Token& keyword);  // lsystem_block.cpp
   /// Sets o.shape from `make` (whose exceptions become errors at `keyword`), then reads the modifiers.
   ParsedObject finish_shape(ParsedObject o, const Token& keyword,
                             const std::function<std::shared_ptr<const geometry::Shape>()>& make);

@@ -106,6 +106,10 @@ ShapePtr superellipsoid(double east_west, double north_south) {
   return std::make_shared<geometry::Superellipsoid>(east_west, north_south);
 }
 
+ShapePtr branch_set(std::span<const geometry::BranchInput> branches) {
+  return std::make_shared<geometry::BranchSet>(branches);
+}
+
 ShapePtr height_field(geometry::HeightGrid grid, bool smooth, double water_level) {
   return std::make_shared<geometry::HeightField>(std::move(grid), smooth, water_level);
 }

@@ -3,10 +3,12 @@
 // keyword in objects.cpp.
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "snell/geometry/blob.hpp"
+#include "snell/geometry/branch_set.hpp"
 #include "snell/geometry/height_field.hpp"
 #include "snell/geometry/isosurface.hpp"
 #include "snell/geometry/julia_fractal.hpp"
@@ -51,6 +53,8 @@ ShapePtr quadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear, dou
 std::shared_ptr<const geometry::Isosurface> isosurface(geometry::IsosurfaceSettings settings);
 ShapePtr superellipsoid(double east_west, double north_south);
 ShapePtr height_field(geometry::HeightGrid grid, bool smooth, double water_level);
+/// Round cones under one BVH (an L-system's branches).
+ShapePtr branch_set(std::span<const geometry::BranchInput> branches);
 ShapePtr julia_fractal(const geometry::JuliaFractal::Settings& settings);
 
 }  // namespace snell::sdl::shapes
