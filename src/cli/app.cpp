@@ -13,6 +13,7 @@
 
 #include "cli/checkpoint.hpp"
 #include "cli/distributed.hpp"
+#include "cli/explain_command.hpp"
 #include "cli/merge_command.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
@@ -287,6 +288,7 @@ int run_app(const std::vector<std::string>& args) {
       return render(o);
     }
     if (!args.empty() && args[0] == "merge") return run_merge({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "explain") return run_explain({args.begin() + 1, args.end()});
     if (args.size() == 1 && args[0] == "--version") {
       fmt::print("{}\n", version_line());
       return kOk;
