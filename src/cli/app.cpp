@@ -11,6 +11,7 @@
 #include <memory>
 #include <mutex>
 
+#include "cli/accelerator_choice.hpp"
 #include "cli/checkpoint.hpp"
 #include "cli/distributed.hpp"
 #include "cli/explain_command.hpp"
@@ -112,15 +113,6 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
                      "write the resume file every S seconds while rendering");
   render->add_option("--max-loop", o.max_loop, "most iterations of one #while or #for (default 10 million)");
   return app;
-}
-
-std::unique_ptr<accel::Accelerator> build_accelerator(const std::string& name, const scene::Scene& scene) {
-  if (name != "auto") return accel::make_accelerator(name, scene);
-  try {
-    return accel::make_accelerator("embree", scene);
-  } catch (const std::invalid_argument&) {
-    return accel::make_accelerator("none", scene);
-  }
 }
 
 int render(CliOptions& o) {

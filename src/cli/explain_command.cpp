@@ -10,6 +10,7 @@
 #include <optional>
 #include <tuple>
 
+#include "cli/accelerator_choice.hpp"
 #include "cli/app.hpp"
 #include "cli/explain_layers.hpp"
 #include "cli/options.hpp"
@@ -50,15 +51,6 @@ std::pair<int, int> parse_pixel(const std::string& text) {
   if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',')
     throw UsageError(fmt::format("--pixel {}: expected X,Y (whole numbers, 0,0 is the top left)", text));
   return {x, y};
-}
-
-std::unique_ptr<accel::Accelerator> accelerator_for(const std::string& name, const scene::Scene& scene) {
-  if (name != "auto") return accel::make_accelerator(name, scene);
-  try {
-    return accel::make_accelerator("embree", scene);
-  } catch (const std::invalid_argument&) {
-    return accel::make_accelerator("none", scene);
-  }
 }
 
 render::RenderOptions render_options(const ExplainOptions& o) {
@@ -137,7 +129,7 @@ int run_explain(const std::vector<std::string>& args) {
   if (!o.svg.empty()) check_writable(o.svg, "--svg");
 
   const scene::Scene scene = load_scene(o);
-  const auto accelerator = accelerator_for(o.accel, scene);
+  const auto accelerator = build_accelerator(o.accel, scene);
   if (!o.pixel.empty()) {
     const render::explain::PixelExplanation e =
         render::explain::explain_pixel(scene, *accelerator, ro, x, y, o.sample);
