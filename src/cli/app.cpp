@@ -73,6 +73,7 @@ const char* kPovHelp =
     "  snell --parse-only scene.pov   parses and builds the scene, prints a summary\n"
     "  +SR/+ER/+SC/+EC partial render, +C continue an interrupted one, --checkpoint S\n"
     "  snell merge part1.exr part2.exr -o out.png   joins partial renders\n"
+    "  snell explain scene.pov --pixel X,Y   shows how a pixel is made (snell explain --help)\n"
     "  -A / -J turn anti-aliasing / jitter off. Unknown or unsupported flags are warned about, never fatal.\n"
     "Exit codes: 0 ok, 1 scene error, 2 bad command line, 3 output error, 130 interrupted.\n";
 
