@@ -8,7 +8,7 @@ packages=(
   libpng-dev libfreetype-dev
   libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev libopenmpi-dev openmpi-bin
   zlib1g-dev
-  povray povray-includes povray-examples python3 python3-numpy python3-pil hyperfine
+  povray povray-includes povray-examples python3 python3-numpy python3-pil python3-jsonschema hyperfine
 )
 missing=()
 for p in "${packages[@]}"; do

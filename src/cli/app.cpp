@@ -11,8 +11,10 @@
 #include <memory>
 #include <mutex>
 
+#include "cli/accelerator_choice.hpp"
 #include "cli/checkpoint.hpp"
 #include "cli/distributed.hpp"
+#include "cli/explain_command.hpp"
 #include "cli/frame_loop.hpp"
 #include "cli/merge_command.hpp"
 #include "cli/options.hpp"
@@ -95,6 +97,7 @@ const char* kPovHelp =
     "  +KFI1 +KFF120 (or --frames 1-120) +KI0 +KF1 +KC +SFn +EFn: an animation, out.png -> out001.png...;\n"
     "  --video out.mp4 [--fps 24] joins the frames with ffmpeg when it is installed\n"
     "  snell merge part1.exr part2.exr -o out.png   joins partial renders\n"
+    "  snell explain scene.pov --pixel X,Y   shows how a pixel is made (snell explain --help)\n"
     "  -A / -J turn anti-aliasing / jitter off. Unknown or unsupported flags are warned about, never fatal.\n"
     "Exit codes: 0 ok, 1 scene error, 2 bad command line, 3 output error, 130 interrupted.\n";
 
@@ -161,15 +164,6 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("--fps", o.fps, "frames per second of --video (default 24)");
   render->add_option("--max-loop", o.max_loop, "most iterations of one #while or #for (default 10 million)");
   return app;
-}
-
-std::unique_ptr<accel::Accelerator> build_accelerator(const std::string& name, const scene::Scene& scene) {
-  if (name != "auto") return accel::make_accelerator(name, scene);
-  try {
-    return accel::make_accelerator("embree", scene);
-  } catch (const std::invalid_argument&) {
-    return accel::make_accelerator("none", scene);
-  }
 }
 
 /// One frame (or the still): parse, render, write. The scene is parsed again for every frame, since scenes
@@ -353,6 +347,7 @@ int run_app(const std::vector<std::string>& args) {
       return render(o);
     }
     if (!args.empty() && args[0] == "merge") return run_merge({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "explain") return run_explain({args.begin() + 1, args.end()});
     if (args.size() == 1 && args[0] == "--version") {
       fmt::print("{}\n", version_line());
       return kOk;

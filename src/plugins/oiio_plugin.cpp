@@ -53,6 +53,19 @@ extern "C" __attribute__((visibility("default"))) int snell_oiio_write(const cha
   return 0;
 }
 
+extern "C" __attribute__((visibility("default"))) int snell_oiio_write_channels(
+    const char* path, int width, int height, int channels, const char* const* names, const float* pixels,
+    char* error, size_t error_size) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return fail(OIIO::geterror(), error, error_size);
+  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+  spec.channelnames.assign(names, names + channels);
+  spec.alpha_channel = -1;
+  if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels) || !out->close())
+    return fail(out->geterror(), error, error_size);
+  return 0;
+}
+
 extern "C" __attribute__((visibility("default"))) int snell_oiio_read(const char* path, int* width,
                                                                       int* height, int* file_channels,
                                                                       float** pixels, char* error,

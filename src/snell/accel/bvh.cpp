@@ -207,6 +207,7 @@ bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::Ray
   bool found = test_all(unbounded_, ray, t_min, t_max, kind, hit);
   if (objects_.empty() || !(t_min < t_max)) return found;
   const RayBox slabs(ray);
+  NodeTally tally;
   double exit;
   std::array<Pending, kStackSize> stack;
   int top = 0;
@@ -218,6 +219,7 @@ bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::Ray
   while (top > 0) {
     const Pending p = stack[--top];
     if (p.entry > t_max) continue;
+    tally.visit();
     if (p.count > 0) {
       for (uint32_t i = p.index; i < p.index + p.count; ++i) {
         if (test_object(*objects_[i], ray, t_min, t_max, kind, hit)) {

@@ -110,8 +110,10 @@ bool Grid::intersect(const math::Ray& ray, double t_min, double t_max, scene::Ra
   math::Vec3 next{plane_t(0), plane_t(1), plane_t(2)};
 
   Mailbox mailbox;
+  NodeTally tally;
   for (;;) {
     const size_t c = cell_index(cell);
+    tally.visit();
     for (uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
       const uint32_t i = cell_objects_[k];
       if (mailbox.first_visit(i) && test_object(*objects_[i], ray, t_min, t_max, kind, hit)) {

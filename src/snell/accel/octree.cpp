@@ -99,12 +99,14 @@ bool Octree::intersect(const math::Ray& ray, double t_min, double t_max, scene::
   const uint32_t near =
       (ray.direction.x < 0 ? 1u : 0u) | (ray.direction.y < 0 ? 2u : 0u) | (ray.direction.z < 0 ? 4u : 0u);
   Mailbox mailbox;
+  NodeTally tally;
   std::array<uint32_t, kStackSize> stack;
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
     if (!slabs.hits(node.box, t_min, t_max)) continue;
+    tally.visit();  // nodes the ray enters, as the BVH counts them
     if (!node.leaf) {
       for (int i = 7; i >= 0; --i) stack[top++] = node.first + (static_cast<uint32_t>(i) ^ near);
       continue;

@@ -45,6 +45,8 @@ LoadResult load() {
     result.backend.write = reinterpret_cast<SnellOiioWrite>(dlsym(handle, "snell_oiio_write"));
     result.backend.read = reinterpret_cast<SnellOiioRead>(dlsym(handle, "snell_oiio_read"));
     result.backend.free = reinterpret_cast<SnellOiioFree>(dlsym(handle, "snell_oiio_free"));
+    result.backend.write_channels =
+        reinterpret_cast<SnellOiioWriteChannels>(dlsym(handle, "snell_oiio_write_channels"));
     if (result.backend.write && result.backend.read && result.backend.free) {
       result.error.clear();
       return result;

@@ -8,6 +8,8 @@ struct ImageBackend {
   SnellOiioWrite write = nullptr;
   SnellOiioRead read = nullptr;
   SnellOiioFree free = nullptr;
+  /// Null with an older plugin.
+  SnellOiioWriteChannels write_channels = nullptr;
 };
 
 /// Starts loading the plugin on a background thread; call early (the CLI does at start-up).

@@ -21,4 +21,9 @@ using SnellOiioWrite = int (*)(const char* path, int width, int height, int chan
 using SnellOiioRead = int (*)(const char* path, int* width, int* height, int* file_channels, float** pixels,
                               char* error, size_t error_size);
 using SnellOiioFree = void (*)(float* pixels);
+/// Writes `channels` float channels per pixel, named by `names` ("R", "depth.Z": OpenEXR's layer.channel
+/// names), to a multi-layer EXR at `path`. Returns 0 on success.
+using SnellOiioWriteChannels = int (*)(const char* path, int width, int height, int channels,
+                                       const char* const* names, const float* pixels, char* error,
+                                       size_t error_size);
 }

@@ -9,6 +9,7 @@
 #include "snell/math/pcg32.hpp"
 #include "snell/math/ray.hpp"
 #include "snell/render/ray_counters.hpp"
+#include "snell/render/trace_observer.hpp"
 #include "snell/scene/scene.hpp"
 
 namespace snell::render {
@@ -17,6 +18,9 @@ namespace snell::render {
 struct TraceContext {
   math::Pcg32 rng;
   RayCounters counters;
+  /// Null in normal renders; set by `snell explain` and the AOV layers to watch the rays
+  /// (trace_observer.hpp).
+  TraceObserver* observer = nullptr;
 };
 
 class Integrator {

@@ -30,6 +30,30 @@ using math::Color;
 constexpr unsigned kFlushDenormals = 0x8040;
 #endif
 
+math::Vec2 sample_position(const RenderOptions& options, int x, int y, int k, math::Pcg32& rng) {
+  const double w = options.width, h = options.height;
+  if (k == 0) return {(x + 0.5) / w, (y + 0.5) / h};
+  const int n = options.aa_depth;
+  const int i = (k - 1) % n, j = (k - 1) / n;
+  double dx = (i + 0.5) / n, dy = (j + 0.5) / n;
+  if (options.jitter) {
+    const uint64_t pixel =
+        static_cast<uint64_t>(y) * static_cast<uint64_t>(options.width) + static_cast<uint64_t>(x);
+    rng.seed(
+        math::mix_seed(pixel, static_cast<uint64_t>(k), static_cast<uint64_t>(options.frame), options.seed),
+        0xda3e39cb94b95bdbULL);
+    dx += options.jitter_amount * (rng.next_double() - 0.5) / n;
+    dy += options.jitter_amount * (rng.next_double() - 0.5) / n;
+  }
+  return {(x + dx) / w, (y + dy) / h};
+}
+
+void seed_camera_sample(math::Pcg32& rng, double sx, double sy, const RenderOptions& options) {
+  rng.seed(math::mix_seed(std::bit_cast<uint64_t>(sx), std::bit_cast<uint64_t>(sy),
+                          static_cast<uint64_t>(options.frame), options.seed),
+           0x5851f42d4c957f2dULL);
+}
+
 double color_distance(const Color& a, const Color& b) {
   return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
 }
@@ -98,9 +122,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
   // Each camera sample draws its random numbers (area light jitter) from a generator seeded by where it
   // falls in the image, so the image is the same for any thread count and tile order.
   auto trace_point = [&](double sx, double sy, TraceContext& ctx) {
-    ctx.rng.seed(math::mix_seed(std::bit_cast<uint64_t>(sx), std::bit_cast<uint64_t>(sy),
-                                static_cast<uint64_t>(options_.frame), options_.seed),
-                 0x5851f42d4c957f2dULL);
+    seed_camera_sample(ctx.rng, sx, sy, options_);
     const auto ray = camera->generate_ray(sx, sy, options_.time);
     return ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
   };
@@ -161,20 +183,10 @@ RenderStats Renderer::render_into(io::Image& image) const {
     ++supersampled;
     const int n = options_.aa_depth;
     Color sum = c;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        double dx = (i + 0.5) / n, dy = (j + 0.5) / n;
-        if (options_.jitter) {
-          const uint64_t pixel =
-              static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
-          ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(j * n + i + 1),
-                                      static_cast<uint64_t>(options_.frame), options_.seed),
-                       0xda3e39cb94b95bdbULL);
-          dx += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
-          dy += options_.jitter_amount * (ctx.rng.next_double() - 0.5) / n;
-        }
-        sum += trace_point((x + dx) / w, (y + dy) / h, ctx);
-      }
+    for (int k = 1; k <= n * n; ++k) {
+      const math::Vec2 p = sample_position(options_, x, y, k, ctx.rng);
+      sum += trace_point(p.u, p.v, ctx);
+    }
     return sum / static_cast<double>(n * n + 1);
   };
 

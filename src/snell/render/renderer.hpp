@@ -10,6 +10,7 @@
 
 #include "snell/accel/accelerator.hpp"
 #include "snell/io/image.hpp"
+#include "snell/math/pcg32.hpp"
 #include "snell/render/ray_counters.hpp"
 #include "snell/render/tiles.hpp"
 #include "snell/scene/scene.hpp"
@@ -78,6 +79,13 @@ class Renderer {
   const accel::Accelerator& accel_;
   RenderOptions options_;
 };
+
+/// Where sample `k` of pixel (x, y) lies in the image (0..1 across and down): k = 0 is the first pass's
+/// pixel centre, k = 1..aa_depth^2 the supersampling grid row by row, jittered when options.jitter.
+math::Vec2 sample_position(const RenderOptions& options, int x, int y, int k, math::Pcg32& rng);
+/// Seeds `rng` for the camera sample at image point (sx, sy), so its random numbers (area light jitter)
+/// depend only on where it falls, never on threads or tiles.
+void seed_camera_sample(math::Pcg32& rng, double sx, double sy, const RenderOptions& options);
 
 /// POV-Ray's anti-aliasing colour distance: the sum of the absolute channel differences.
 double color_distance(const math::Color& a, const math::Color& b);

@@ -59,6 +59,15 @@ material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
   return hit.object->texture->pigment_at(hit.point, hit.normal, hit.uv);
 }
 
+/// Tells the observer the emitted and ambient parts of a surface's own light; `colour` is the pigment
+/// scaled by opacity.
+void report_own_light(TraceObserver& observer, const Color& colour, const material::Finish& f,
+                      const Color& ambient_light) {
+  if (!f.emission.is_black()) observer.term(RayTerm::emitted, colour * f.emission, colour * f.emission);
+  if (!f.ambient.is_black())
+    observer.term(RayTerm::ambient, colour * f.ambient, colour * f.ambient * ambient_light);
+}
+
 }  // namespace
 
 Vec3 offset_origin(const Vec3& p, const Vec3& side) {
@@ -77,6 +86,7 @@ struct WhittedIntegrator::ShadingPoint {
   material::Rgbft pigment;
   /// How much of the surface's own colour shows (POV-Ray's "att": less when transparent).
   double opacity = 1;
+  TraceObserver* observer = nullptr;
 };
 
 WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)
@@ -117,13 +127,15 @@ InteriorStack WhittedIntegrator::containing(const Vec3& point) const {
 
 Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double weight,
                                const InteriorStack& inside, TraceContext& context) const {
+  ObservedRay observed(context.observer, kind, ray, level, weight);
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return Color(0);
   scene::SurfaceHit hit;
   const bool found = accel_.intersect(ray, 0.0, math::kInfinity, kind, hit);
+  observed.hit(found ? &hit : nullptr);
   const Color seen =
       found ? shade(ray, hit, level, weight, inside, context) : scene_.miss_color(ray.direction);
-  if (!has_atmosphere_) return seen;
-  return through_atmosphere(ray, found ? hit.t : kSkyDepth, inside, seen, context);
+  if (!has_atmosphere_) return observed.result(seen);
+  return observed.result(through_atmosphere(ray, found ? hit.t : kSkyDepth, inside, seen, context));
 }
 
 Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const InteriorStack& inside,
@@ -153,6 +165,7 @@ Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const 
 
 Color WhittedIntegrator::shadowed(const scene::Light& light, const Vec3& point, const Vec3& normal,
                                   const LightRay& toward, const Color& colour, TraceContext& context) const {
+  ObservedRay observed(context.observer, RayKind::shadow, {point, toward.direction, 0.0}, 0, 1.0, &light);
   if (!light.projected_through.empty() && !crosses_projection(light, point, toward)) return Color(0);
   Color c = shadow_filter(point, normal, toward.direction, toward.distance, colour, context);
   // `media_attenuation`: the atmosphere's media and fog thin the light on its way (trace.cpp,
@@ -163,7 +176,7 @@ Color WhittedIntegrator::shadowed(const scene::Light& light, const Vec3& point, 
     if (!atmosphere_.empty()) c *= media_transmittance(atmosphere_, shadow_ray, depth);
     if (!scene_.fogs.empty()) c *= fogs_along(scene_.fogs, shadow_ray, depth).through;
   }
-  return c;
+  return observed.result(c);
 }
 
 Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int level, double weight,
@@ -186,6 +199,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   // (trace.cpp: layNormal = rawnormal; Perturb_Normal); a bump may face away, and it keeps it.
   sp.normal = hit.object->texture->shading_normal(hit.point, shape_normal, hit.uv);
   sp.pigment = pigment_at(hit);
+  sp.observer = context.observer;
   const material::Rgbft& pc = sp.pigment;
   const material::Finish& f = *sp.finish;
   // Opacity: 3.7 scales filter by the brightest channel (a black filter blocks); older versions do not.
@@ -230,6 +244,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
 
   // Emission and classic ambient, then the light sources.
   Color result = pc.rgb * (f.emission + f.ambient * scene_.settings.ambient_light) * sp.opacity;
+  if (sp.observer) report_own_light(*sp.observer, pc.rgb * sp.opacity, f, scene_.settings.ambient_light);
   if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
 
   // Light through the surface (trace.cpp: filCol, trans).
@@ -284,6 +299,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
                       RayKind::refraction, level + 1, t_weight, next, context);
     } else {
       tir = true;
+      if (sp.observer) sp.observer->total_internal_reflection();
       through = reflect(sp, level, t_weight, inside, context);
     }
     // Interior fade over the distance travelled inside this object (POV-Ray 3.7 reference, "Interior").
@@ -299,12 +315,17 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
         fade = fc + (Color(1) - fc) / a;
       }
     }
-    result += tir ? fade * through : fade * through * through_filter;
+    const Color through_weight = tir ? fade : fade * through_filter;
+    result += through_weight * through;
+    if (sp.observer) sp.observer->term(RayTerm::transmitted, through_weight, through_weight * through);
   }
 
   if (!tir && f.reflects() && !reflectivity.is_black()) {
     const Color seen = reflect(sp, level, reflect_weight, inside, context);
-    result += reflectivity * (f.reflection_exponent != 1 ? pow_color(seen, f.reflection_exponent) : seen);
+    const Color reflected =
+        reflectivity * (f.reflection_exponent != 1 ? pow_color(seen, f.reflection_exponent) : seen);
+    result += reflected;
+    if (sp.observer) sp.observer->term(RayTerm::reflected, reflectivity, reflected);
   }
   return result;
 }
@@ -401,13 +422,16 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
     const double c = std::fabs(cos_l);
     const double intensity = (f.brilliance != 1 ? std::pow(c, f.brilliance) : c) * f.diffuse * sp.opacity;
     sum += intensity * pigment * lc;
+    if (sp.observer) sp.observer->term(RayTerm::diffuse, intensity * pigment, intensity * pigment * lc);
   }
   // Phong: the mirror direction of the eye against the light direction, to the power phong_size.
   if (f.phong > 0) {
     const double c = dot(math::reflect(eye, sp.normal), to_light);
     if (c > 0) {
       const double intensity = f.phong * std::pow(c, f.phong_size);
-      sum += intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
+      const Color phong = intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
+      sum += phong;
+      if (sp.observer) sp.observer->term(RayTerm::phong, Color(intensity), phong);
     }
   }
   // Specular: Blinn's halfway vector, exponent 1/roughness.
@@ -418,7 +442,10 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
       const double c = dot(h, sp.normal) / hl;
       if (c > 0) {
         const double intensity = f.specular * std::pow(c, 1.0 / f.roughness);
-        sum += intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
+        const Color specular =
+            intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
+        sum += specular;
+        if (sp.observer) sp.observer->term(RayTerm::specular, Color(intensity), specular);
       }
     }
   }
@@ -437,6 +464,7 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     scene::SurfaceHit hit;
     if (!accel_.intersect({origin, dir, 0.0}, 0.0, remaining, RayKind::shadow, hit)) break;
     const material::Rgbft c = pigment_at(hit);
+    if (context.observer) context.observer->shadow_blocker(hit, !c.is_transparent());
     if (!c.is_transparent()) return Color(0);
     light *= transmitted_color(c);
     if (max_abs(light) < scene_.settings.adc_bailout) return Color(0);
