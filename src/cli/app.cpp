@@ -15,8 +15,10 @@
 #include "cli/distributed.hpp"
 #include "cli/merge_command.hpp"
 #include "cli/options.hpp"
+#include "cli/preview/open_preview.hpp"
 #include "cli/progress.hpp"
 #include "cli/render_fingerprint.hpp"
+#include "cli/watch.hpp"
 #include "snell/accel/accelerator.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
@@ -84,8 +86,10 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->set_help_flag("--help", "print this help");
   render->add_option("scene", o.input, "scene file (.pov)")->required();
   render->add_option("-o,--output", o.output, "output image (.png, .exr, .hdr); default: <scene>.png");
-  render->add_option("-w,--width", o.width, "image width in pixels (default 800)");
-  render->add_option("-h,--height", o.height, "image height in pixels (default 600)");
+  render->add_option("-w,--width", o.width, "image width in pixels (default 800)")
+      ->each([&o](const std::string&) { o.size_given = true; });
+  render->add_option("-h,--height", o.height, "image height in pixels (default 600)")
+      ->each([&o](const std::string&) { o.size_given = true; });
   render->add_option("--aa", o.aa_threshold, "anti-alias with this threshold (POV-Ray +A)")
       ->each([&o](const std::string&) { o.antialias = true; });
   render->add_option("--aa-depth", o.aa_depth,
@@ -98,6 +102,10 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   render->add_flag("--quiet", o.quiet, "no progress, warnings or statistics");
   render->add_flag("--stats", o.stats, "print statistics even with --quiet");
+  render->add_flag("--display", o.display, "show the render in a window (POV-Ray +D)");
+  render->add_option("--display-snapshot", o.display_snapshot)->group("");  // test hook: window pixels as PNG
+  render->add_flag("--watch", o.watch,
+                   "render again whenever the scene or a file it reads changes (320x240 unless -w/-h)");
   render->add_flag("--parse-only", o.parse_only,
                    "parse and build the scene, print a summary, render nothing");
   render->add_option("--start-row", o.start_row,
@@ -145,6 +153,7 @@ int render(CliOptions& o) {
   po.image_height = o.height;
   po.declares = o.declares;
   po.max_while_iterations = o.max_loop;
+  po.on_file_read = o.on_file_read;
   // One frame of the animation range: its number and clock (POV-Ray's animationprocessing.cpp rules).
   po.initial_frame = o.initial_frame;
   po.final_frame = std::max(o.final_frame, o.initial_frame);
@@ -184,6 +193,11 @@ int render(CliOptions& o) {
   ro.region = {bounds.x0, bounds.y0, bounds.x1, bounds.y1};
   ro.cancel = &g_interrupted;
   Progress progress(!o.quiet);
+  io::WriteOptions wo;
+  wo.bits = o.bits;
+  wo.encoding.assumed_gamma = scene.effective_assumed_gamma();
+  wo.encoding.passthrough = scene.settings.assumed_gamma <= 0 && scene.settings.language_version < 3.7;
+  const std::unique_ptr<PreviewWindow> preview = o.display ? open_preview(o, wo.encoding) : nullptr;
 
   const uint64_t fingerprint = render_fingerprint(o, bounds);
   io::Image image(o.width, o.height);
@@ -214,7 +228,9 @@ int render(CliOptions& o) {
   job.tile_done = [&](const render::Tile& t) {
     checkpoint.tile_done(t);
     std::lock_guard lock(progress_mutex);
-    progress.update(static_cast<double>(++tiles_finished) / static_cast<double>(job.tiles.size()));
+    const double fraction = static_cast<double>(++tiles_finished) / static_cast<double>(job.tiles.size());
+    progress.update(fraction);
+    if (preview) show_in_preview(*preview, t, image, fraction);
   };
 
   const auto t_render = Clock::now();
@@ -225,10 +241,6 @@ int render(CliOptions& o) {
   if (distributed::rank() != 0) return result.cancelled ? kInterrupted : kOk;
 
   const auto t_write = Clock::now();
-  io::WriteOptions wo;
-  wo.bits = o.bits;
-  wo.encoding.assumed_gamma = scene.effective_assumed_gamma();
-  wo.encoding.passthrough = scene.settings.assumed_gamma <= 0 && scene.settings.language_version < 3.7;
   // Unrendered pixels (a partial or interrupted render) stay transparent; a full image is written as RGB.
   image.drop_alpha_if_covered();
   io::write_image(o.output, image, wo);
@@ -256,6 +268,7 @@ int render(CliOptions& o) {
                a.objects, a.unbounded_objects, a.nodes, static_cast<double>(a.memory_bytes) / 1024,
                a.build_seconds);
   }
+  if (preview) preview->finish(o.display_snapshot, o.pause_when_done);
   if (result.cancelled) {
     fmt::print(stderr,
                "snell: interrupted; the partial image was written to {} and the finished tiles to {}\n"
@@ -284,7 +297,7 @@ int run_app(const std::vector<std::string>& args) {
         throw UsageError(e.what());
       }
       o.accel = accel;
-      return render(o);
+      return o.watch ? watch_and_render(o, render, g_interrupted) : render(o);
     }
     if (!args.empty() && args[0] == "merge") return run_merge({args.begin() + 1, args.end()});
     if (args.size() == 1 && args[0] == "--version") {
@@ -300,7 +313,7 @@ int run_app(const std::vector<std::string>& args) {
       return args.empty() ? kUsageError : kOk;
     }
     CliOptions o = parse_pov_arguments(args);
-    return render(o);
+    return o.watch ? watch_and_render(o, render, g_interrupted) : render(o);
   } catch (const UsageError& e) {
     report_error(e.what());
     return kUsageError;

@@ -1,0 +1,18 @@
+#pragma once
+// The CLI's side of +D: opens the render window for one render or says once why there is none.
+#include <memory>
+
+#include "cli/options.hpp"
+#include "cli/preview/preview_window.hpp"
+
+namespace snell::cli {
+
+/// The window for a render of `options` (rank 0 only), or null after a warning (printed once per process,
+/// so a --watch loop does not repeat it) when there is no display; the render goes on without it.
+std::unique_ptr<PreviewWindow> open_preview(const CliOptions& options, const io::Encoding& encoding);
+
+/// Shows a finished tile and the progress in the window.
+void show_in_preview(PreviewWindow& window, const render::Tile& tile, const io::Image& image,
+                     double fraction);
+
+}  // namespace snell::cli

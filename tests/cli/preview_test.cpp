@@ -1,0 +1,132 @@
+// The +D render window (issue 12) under a virtual X server: the window's pixels, read back when the render
+// ends (hidden option --display-snapshot), must be the finished image's pixels. Without Xvfb the test skips.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "run_command.hpp"
+#include "snell/io/image_file.hpp"
+
+extern char** environ;
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kXvfb = "/usr/bin/Xvfb";
+
+fs::path work_dir() {
+  const fs::path dir = fs::temp_directory_path() / ("snell_preview_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// Colours across the whole range, a gradient and a gamma-encoded output, so a window that drops or
+/// re-encodes values differs from the file.
+fs::path scene_file(const fs::path& dir) {
+  const fs::path path = dir / "preview.pov";
+  std::ofstream(path) << R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 1, -4> look_at 0 }
+light_source { <3, 5, -4>, 1 }
+background { rgb <0.1, 0.2, 0.4> }
+plane { y, -1 pigment { gradient x color_map { [0 rgb 0][1 rgb <1, 0.5, 0.2>] } } }
+sphere { 0, 1 pigment { rgb <0.9, 0.3, 0.1> } finish { phong 0.9 } }
+)";
+  return path;
+}
+
+/// A private X server on a display number chosen from the process id (tests run in parallel).
+class VirtualDisplay {
+ public:
+  VirtualDisplay() : number_(200 + getpid() % 700) {
+    // Built piecewise: GCC 12 warns falsely (-Wrestrict) on ":" + std::to_string(...).
+    std::string display = ":";
+    display += std::to_string(number_);
+    std::vector<std::string> args{kXvfb, display, "-screen", "0", "320x240x24", "-nolisten", "tcp"};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t quiet;
+    posix_spawn_file_actions_init(&quiet);
+    posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+    if (posix_spawn(&pid_, kXvfb, &quiet, nullptr, argv.data(), environ) != 0) pid_ = 0;
+    posix_spawn_file_actions_destroy(&quiet);
+    // The server is ready once its socket exists.
+    std::string socket_name = "X";
+    socket_name += std::to_string(number_);
+    const fs::path socket = fs::path("/tmp/.X11-unix") / socket_name;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (pid_ && !fs::exists(socket) && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ready_ = pid_ && fs::exists(socket);
+  }
+  ~VirtualDisplay() {
+    if (!pid_) return;
+    kill(pid_, SIGTERM);
+    waitpid(pid_, nullptr, 0);
+  }
+  bool ready() const { return ready_; }
+  std::string env() const {
+    std::string assignment = "DISPLAY=:";
+    assignment += std::to_string(number_);
+    return assignment;
+  }
+
+ private:
+  int number_;
+  pid_t pid_ = 0;
+  bool ready_ = false;
+};
+
+TEST(Preview, WindowShowsTheFinishedImageUnderXvfb) {
+  if (!fs::exists(kXvfb)) GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb xauth)";
+  VirtualDisplay display;
+  if (!display.ready()) GTEST_SKIP() << "Xvfb did not start";
+  const fs::path dir = work_dir();
+  const fs::path out = dir / "out.png", shot = dir / "window.png";
+  const test::Outcome r =
+      test::run_command(display.env() + " " + SNELL_BINARY + " +I" + scene_file(dir).string() + " +O" +
+                        out.string() + " +W80 +H60 +A0.3 +D --display-snapshot " + shot.string());
+  if (r.output.find("built without SDL2") != std::string::npos) GTEST_SKIP() << "snell has no SDL2";
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(r.output.find("no preview window"), std::string::npos) << r.output;
+  ASSERT_TRUE(fs::exists(shot)) << r.output;
+  const io::Image file = io::read_image(out), window = io::read_image(shot);
+  ASSERT_EQ(window.width, 80);
+  ASSERT_EQ(window.height, 60);
+  size_t differing = 0;
+  for (size_t i = 0; i < file.rgb.size(); ++i) differing += file.rgb[i] != window.rgb[i];
+  EXPECT_EQ(differing, 0u);
+  fs::remove_all(dir);
+}
+
+TEST(Preview, WithoutADisplayWarnsOnceAndRenders) {
+  const fs::path dir = work_dir();
+  const fs::path out = dir / "headless.png";
+  const test::Outcome r =
+      test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + std::string(SNELL_BINARY) +
+                        " +I" + scene_file(dir).string() + " +O" + out.string() + " +W40 +H30 +D");
+  EXPECT_EQ(r.code, 0) << r.output;
+  const size_t first = r.output.find("no preview window");
+  EXPECT_NE(first, std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("no preview window", first + 1), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace snell
