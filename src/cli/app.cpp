@@ -69,9 +69,10 @@ double seconds_since(Clock::time_point t) {
 const char* kPovHelp =
     "POV-Ray form:\n"
     "  snell +Iscene.pov [+Oout.png] [+W640] [+H480] [+A[0.3]] [+R3] [+J[1.0]] [+Ldir] [+WTn]\n"
-    "        [+FN|+FN16|+FE|+FH] [-D] [Declare=NAME=value] [--quiet] [--stats] [--accel NAME]\n"
+    "        [+FN|+FN16|+FE|+FH] [+D [+P]] [Declare=NAME=value] [--quiet] [--stats] [--accel NAME]\n"
     "  snell --parse-only scene.pov   parses and builds the scene, prints a summary\n"
     "  +SR/+ER/+SC/+EC partial render, +C continue an interrupted one, --checkpoint S\n"
+    "  +D / --display render window, --watch render again on every change of the scene or its files\n"
     "  snell merge part1.exr part2.exr -o out.png   joins partial renders\n"
     "  -A / -J turn anti-aliasing / jitter off. Unknown or unsupported flags are warned about, never fatal.\n"
     "Exit codes: 0 ok, 1 scene error, 2 bad command line, 3 output error, 130 interrupted.\n";

@@ -117,14 +117,23 @@ TEST(Preview, WindowShowsTheFinishedImageUnderXvfb) {
 TEST(Preview, WithoutADisplayWarnsOnceAndRenders) {
   const fs::path dir = work_dir();
   const fs::path out = dir / "headless.png";
-  const test::Outcome r =
-      test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + std::string(SNELL_BINARY) +
-                        " +I" + scene_file(dir).string() + " +O" + out.string() + " +W40 +H30 +D");
-  EXPECT_EQ(r.code, 0) << r.output;
-  const size_t first = r.output.find("no preview window");
-  EXPECT_NE(first, std::string::npos) << r.output;
-  EXPECT_EQ(r.output.find("no preview window", first + 1), std::string::npos) << r.output;
-  EXPECT_TRUE(fs::exists(out));
+  const std::string snell =
+      std::string(SNELL_BINARY) + " +I" + scene_file(dir).string() + " +O" + out.string();
+  // POV-Ray's switch, snell's flag and the ini option all ask for the window.
+  for (const std::string flag : {"+D", "--display", "Display=on"}) {
+    fs::remove(out);
+    const test::Outcome r = test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " +
+                                              snell + " +W40 +H30 " + flag);
+    EXPECT_EQ(r.code, 0) << r.output;
+    const size_t first = r.output.find("no preview window");
+    EXPECT_NE(first, std::string::npos) << flag << ": " << r.output;
+    EXPECT_EQ(r.output.find("no preview window", first + 1), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(out)) << flag;
+  }
+  // -D (POV-Ray's usual batch switch) asks for none: no warning.
+  const test::Outcome off = test::run_command("env -u DISPLAY " + snell + " +W40 +H30 -D");
+  EXPECT_EQ(off.code, 0) << off.output;
+  EXPECT_EQ(off.output.find("no preview window"), std::string::npos) << off.output;
   fs::remove_all(dir);
 }
 
