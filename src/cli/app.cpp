@@ -269,7 +269,7 @@ int render(CliOptions& o) {
                a.objects, a.unbounded_objects, a.nodes, static_cast<double>(a.memory_bytes) / 1024,
                a.build_seconds);
   }
-  if (preview) preview->finish(o.display_snapshot, o.pause_when_done);
+  if (preview) preview->finish(o.display_snapshot, o.pause_when_done, &g_interrupted);
   if (result.cancelled) {
     fmt::print(stderr,
                "snell: interrupted; the partial image was written to {} and the finished tiles to {}\n"

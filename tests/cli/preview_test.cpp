@@ -92,9 +92,15 @@ class VirtualDisplay {
   bool ready_ = false;
 };
 
+/// One X server for the tests of this process, stopped at exit (starting one costs up to a second or two).
+const VirtualDisplay& shared_display() {
+  static const VirtualDisplay display;
+  return display;
+}
+
 TEST(Preview, WindowShowsTheFinishedImageUnderXvfb) {
   if (!fs::exists(kXvfb)) GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb xauth)";
-  VirtualDisplay display;
+  const VirtualDisplay& display = shared_display();
   if (!display.ready()) GTEST_SKIP() << "Xvfb did not start";
   const fs::path dir = work_dir();
   const fs::path out = dir / "out.png", shot = dir / "window.png";
@@ -111,6 +117,40 @@ TEST(Preview, WindowShowsTheFinishedImageUnderXvfb) {
   size_t differing = 0;
   for (size_t i = 0; i < file.rgb.size(); ++i) differing += file.rgb[i] != window.rgb[i];
   EXPECT_EQ(differing, 0u);
+  fs::remove_all(dir);
+}
+
+TEST(Preview, PauseKeepsTheWindowOpenAfterTheImageIsWritten) {
+  if (!fs::exists(kXvfb)) GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb xauth)";
+  const VirtualDisplay& display = shared_display();
+  if (!display.ready()) GTEST_SKIP() << "Xvfb did not start";
+  const fs::path dir = work_dir();
+  const fs::path out = dir / "paused.png";
+  const std::string display_setting = display.env();
+  std::vector<std::string> args{
+      SNELL_BINARY, "+I" + scene_file(dir).string(), "+O" + out.string(), "+W40", "+H30", "+D", "+P",
+      "--quiet"};
+  std::vector<char*> argv, env;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::string display_var = display_setting;
+  env.push_back(display_var.data());
+  env.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), env.data()), 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (!fs::exists(out) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  // The image is written; +P keeps the window (and snell) waiting for a key. Ctrl-C ends the wait.
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  int status = 0;
+  const bool still_waiting = waitpid(pid, &status, WNOHANG) == 0;
+  kill(pid, SIGINT);
+  if (still_waiting) waitpid(pid, &status, 0);
+  EXPECT_TRUE(fs::exists(out));
+  EXPECT_TRUE(still_waiting);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
   fs::remove_all(dir);
 }
 

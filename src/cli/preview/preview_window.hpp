@@ -2,6 +2,7 @@
 // The render window of `+D` / `--display` (issue 12), as POV-Ray's: tiles appear as they finish, the title
 // shows progress and the time left. Free of SDL on purpose: only sdl_preview_window.cpp includes SDL2, and a
 // build without SDL2 (no_preview_window.cpp) still links, warning that it has no window.
+#include <atomic>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -20,9 +21,10 @@ class PreviewWindow {
   /// Progress in [0,1]; the title shows it with the estimated time left. Thread-safe.
   virtual void set_progress(double fraction) = 0;
   /// The render has ended: shows the last tiles, writes the window's pixels to `snapshot` when it is not
-  /// empty (a test hook), waits for a key or the window's close button when `wait_for_key` (POV-Ray's +P),
-  /// then closes the window.
-  virtual void finish(const std::filesystem::path& snapshot, bool wait_for_key) = 0;
+  /// empty (a test hook), waits for a key or the window's close button when `wait_for_key` (POV-Ray's +P) or
+  /// until `stop_waiting` becomes true (Ctrl-C), then closes the window.
+  virtual void finish(const std::filesystem::path& snapshot, bool wait_for_key,
+                      const std::atomic<bool>* stop_waiting) = 0;
 };
 
 /// Opens a window of the image's size titled with `title`. Pixels pass through `encoding`, the same

@@ -41,7 +41,7 @@ class SdlPreviewWindow final : public PreviewWindow {
         start_(Clock::now()) {}
 
   ~SdlPreviewWindow() override {
-    if (thread_.joinable()) finish({}, false);
+    if (thread_.joinable()) finish({}, false, nullptr);
   }
 
   /// Starts the window thread; false (with the reason) when SDL cannot open a window.
@@ -73,11 +73,13 @@ class SdlPreviewWindow final : public PreviewWindow {
     fraction_ = fraction;
   }
 
-  void finish(const std::filesystem::path& snapshot, bool wait_for_key) override {
+  void finish(const std::filesystem::path& snapshot, bool wait_for_key,
+              const std::atomic<bool>* stop_waiting) override {
     {
       std::lock_guard lock(mutex_);
       snapshot_ = snapshot;
       wait_for_key_ = wait_for_key;
+      stop_waiting_ = stop_waiting;
       finishing_ = true;
       dirty_ = true;
     }
@@ -90,6 +92,8 @@ class SdlPreviewWindow final : public PreviewWindow {
     // The window is a plain framebuffer: no OpenGL (loading Mesa costs about a second and needs no GPU here).
     SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
     SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
+    // snell's own SIGINT/SIGTERM handlers (interrupt, resume file) must stay in place.
+    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
       started.set_value(fmt::format("cannot start SDL video: {}", SDL_GetError()));
       return;
@@ -148,7 +152,7 @@ class SdlPreviewWindow final : public PreviewWindow {
       }
       SDL_RenderPresent(renderer);
       // A window the user closed stays closed for the rest of the render; nothing waits for it then.
-      if (finishing && (!wait_for_key_ || key_pressed || closed)) return;
+      if (finishing && (!wait_for_key_ || key_pressed || closed || (stop_waiting_ && *stop_waiting_))) return;
       if (closed && !finishing) SDL_HideWindow(window);
       lock.lock();
       wake_.wait_for(lock, kFramePeriod, [this, finishing] { return finishing_ != finishing; });
@@ -190,6 +194,7 @@ class SdlPreviewWindow final : public PreviewWindow {
   bool dirty_ = false;
   bool finishing_ = false;
   bool wait_for_key_ = false;
+  const std::atomic<bool>* stop_waiting_ = nullptr;
   bool snapshot_taken_ = false;
   double fraction_ = 0;
   std::filesystem::path snapshot_;
