@@ -220,6 +220,7 @@ int render(CliOptions& o) {
   std::vector<bool> resumed_index(static_cast<size_t>(render::tiles_across(o.width)) *
                                   render::tiles_down(o.height));
   for (const render::Tile& t : resumed) resumed_index[static_cast<size_t>(t.index)] = true;
+  if (preview) show_in_preview(*preview, resumed, image);
   distributed::Job job{scene, *accelerator, ro, {}, {}};
   for (const render::Tile& t : render::make_tiles(o.width, o.height, ro.region))
     if (!resumed_index[static_cast<size_t>(t.index)]) job.tiles.push_back(t);

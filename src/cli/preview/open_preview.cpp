@@ -19,6 +19,10 @@ std::unique_ptr<PreviewWindow> open_preview(const CliOptions& options, const io:
   return window;
 }
 
+void show_in_preview(PreviewWindow& window, const std::vector<render::Tile>& tiles, const io::Image& image) {
+  for (const render::Tile& t : tiles) window.show_tile(t, image);
+}
+
 void show_in_preview(PreviewWindow& window, const render::Tile& tile, const io::Image& image,
                      double fraction) {
   window.show_tile(tile, image);

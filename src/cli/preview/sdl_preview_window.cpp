@@ -29,6 +29,9 @@ using Clock = std::chrono::steady_clock;
 constexpr int kMaxWindowWidth = 1600;
 constexpr int kMaxWindowHeight = 1000;
 constexpr auto kFramePeriod = std::chrono::milliseconds(33);
+/// Largest image shown: SDL's software renderer limits textures to 16384 pixels a side, and the window's
+/// 8-bit copy of a larger image would cost gigabytes.
+constexpr int kMaxImageSide = 16384;
 
 class SdlPreviewWindow final : public PreviewWindow {
  public:
@@ -213,6 +216,10 @@ std::unique_ptr<PreviewWindow> open_preview_window(int width, int height, const 
                                                    const io::Encoding& encoding, std::string& why) {
   if (!has_display()) {
     why = "no display ($DISPLAY is not set)";
+    return nullptr;
+  }
+  if (width > kMaxImageSide || height > kMaxImageSide) {
+    why = fmt::format("the image is larger than {} pixels a side", kMaxImageSide);
     return nullptr;
   }
   auto window = std::make_unique<SdlPreviewWindow>(width, height, title, encoding);
