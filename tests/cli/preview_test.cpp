@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <fcntl.h>
+#include <poll.h>
 
 #include <chrono>
 #include <filesystem>
@@ -48,48 +49,46 @@ sphere { 0, 1 pigment { rgb <0.9, 0.3, 0.1> } finish { phong 0.9 } }
   return path;
 }
 
-/// A private X server on a display number chosen from the process id (tests run in parallel).
+/// A private X server. Xvfb picks a free display number itself (-displayfd) and writes it to a pipe once it
+/// accepts connections, so tests running in parallel never share or wait for one.
 class VirtualDisplay {
  public:
-  VirtualDisplay() : number_(200 + getpid() % 700) {
-    // Built piecewise: GCC 12 warns falsely (-Wrestrict) on ":" + std::to_string(...).
-    std::string display = ":";
-    display += std::to_string(number_);
-    std::vector<std::string> args{kXvfb, display, "-screen", "0", "320x240x24", "-nolisten", "tcp"};
+  VirtualDisplay() {
+    int ready_pipe[2];
+    if (pipe(ready_pipe) != 0) return;
+    std::vector<std::string> args{kXvfb, "-displayfd", "3", "-screen", "0", "320x240x24", "-nolisten", "tcp"};
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    posix_spawn_file_actions_t quiet;
-    posix_spawn_file_actions_init(&quiet);
-    posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
-    if (posix_spawn(&pid_, kXvfb, &quiet, nullptr, argv.data(), environ) != 0) pid_ = 0;
-    posix_spawn_file_actions_destroy(&quiet);
-    // The server is ready once its socket exists.
-    std::string socket_name = "X";
-    socket_name += std::to_string(number_);
-    const fs::path socket = fs::path("/tmp/.X11-unix") / socket_name;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-    while (pid_ && !fs::exists(socket) && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    ready_ = pid_ && fs::exists(socket);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    // Close the read end first: it may be fd 3 itself.
+    posix_spawn_file_actions_addclose(&actions, ready_pipe[0]);
+    posix_spawn_file_actions_adddup2(&actions, ready_pipe[1], 3);
+    if (posix_spawn(&pid_, kXvfb, &actions, nullptr, argv.data(), environ) != 0) pid_ = 0;
+    posix_spawn_file_actions_destroy(&actions);
+    close(ready_pipe[1]);
+    // The display number arrives as a line once the server is up; end of file means it failed.
+    pollfd p{ready_pipe[0], POLLIN, 0};
+    std::string number;
+    for (char c = 0; pid_ && poll(&p, 1, 10000) > 0 && read(ready_pipe[0], &c, 1) == 1 && c != '\n';)
+      number += c;
+    close(ready_pipe[0]);
+    if (!number.empty()) display_ = ":" + number;
   }
   ~VirtualDisplay() {
     if (!pid_) return;
     kill(pid_, SIGTERM);
     waitpid(pid_, nullptr, 0);
   }
-  bool ready() const { return ready_; }
-  std::string env() const {
-    std::string assignment = "DISPLAY=:";
-    assignment += std::to_string(number_);
-    return assignment;
-  }
+  bool ready() const { return !display_.empty(); }
+  std::string env() const { return "DISPLAY=" + display_; }
 
  private:
-  int number_;
   pid_t pid_ = 0;
-  bool ready_ = false;
+  std::string display_;
 };
 
 /// One X server for the tests of this process, stopped at exit (starting one costs up to a second or two).
