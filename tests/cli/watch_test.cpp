@@ -1,5 +1,5 @@
-// --watch (issue 12): a change to a file the scene includes starts a second render; SIGINT ends the loop with
-// exit code 0.
+// --watch (issue 12): a change to a file the scene includes starts a second render, a scene error does not
+// end the loop, and SIGINT ends it with exit code 0.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -77,17 +77,25 @@ sphere { 0, 1 pigment { Colour } }
     std::ofstream(include) << "#declare Colour = rgb <0, 0, 1>;\n";
   }
   const bool second = first && wait_for(log, "watching 2 files", 2);
+  io::Image after;
+  if (second) {
+    after = io::read_image(out);
+    // A half-typed edit is a scene error: printed, and the loop goes on watching.
+    std::ofstream(include) << "#declare Colour = rgb <0, 0,\n";
+  }
+  const bool third = second && wait_for(log, "watching 2 files", 3);
   kill(pid, SIGINT);
   int status = 0;
   waitpid(pid, &status, 0);
   const std::string text = read_text(log);
   ASSERT_TRUE(first) << text;
   ASSERT_TRUE(second) << text;
+  ASSERT_TRUE(third) << text;
+  EXPECT_NE(text.find(".pov:3:1: error:"), std::string::npos) << text;
   EXPECT_NE(text.find("colour.inc changed; rendering again"), std::string::npos) << text;
   ASSERT_TRUE(WIFEXITED(status)) << text;
   EXPECT_EQ(WEXITSTATUS(status), 0) << text;
   // Without +W/+H, --watch renders at its preview size; the sphere's centre turned from red to blue.
-  const io::Image after = io::read_image(out);
   ASSERT_EQ(after.width, 320);
   ASSERT_EQ(after.height, 240);
   const size_t centre = after.index(160, 120);
