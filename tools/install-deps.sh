@@ -7,7 +7,7 @@ packages=(
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev libassimp-dev
   libpng-dev libfreetype-dev
   libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev libopenmpi-dev openmpi-bin
-  zlib1g-dev
+  zlib1g-dev libsdl2-dev xvfb xauth
   povray povray-includes povray-examples python3 python3-numpy python3-pil python3-jsonschema hyperfine
 )
 missing=()

@@ -18,9 +18,11 @@
 #include "cli/frame_loop.hpp"
 #include "cli/merge_command.hpp"
 #include "cli/options.hpp"
+#include "cli/preview/open_preview.hpp"
 #include "cli/progress.hpp"
 #include "cli/render_fingerprint.hpp"
 #include "cli/video.hpp"
+#include "cli/watch.hpp"
 #include "snell/accel/accelerator.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
@@ -91,11 +93,12 @@ double seconds_since(Clock::time_point t) {
 const char* kPovHelp =
     "POV-Ray form:\n"
     "  snell +Iscene.pov [+Oout.png] [+W640] [+H480] [+A[0.3]] [+R3] [+J[1.0]] [+Ldir] [+WTn]\n"
-    "        [+FN|+FN16|+FE|+FH] [-D] [Declare=NAME=value] [--quiet] [--stats] [--accel NAME]\n"
+    "        [+FN|+FN16|+FE|+FH] [+D [+P]] [Declare=NAME=value] [--quiet] [--stats] [--accel NAME]\n"
     "  snell --parse-only scene.pov   parses and builds the scene, prints a summary\n"
     "  +SR/+ER/+SC/+EC partial render, +C continue an interrupted one, --checkpoint S\n"
     "  +KFI1 +KFF120 (or --frames 1-120) +KI0 +KF1 +KC +SFn +EFn: an animation, out.png -> out001.png...;\n"
     "  --video out.mp4 [--fps 24] joins the frames with ffmpeg when it is installed\n"
+    "  +D / --display render window, --watch render again on every change of the scene or its files\n"
     "  snell merge part1.exr part2.exr -o out.png   joins partial renders\n"
     "  snell explain scene.pov --pixel X,Y   shows how a pixel is made (snell explain --help)\n"
     "  -A / -J turn anti-aliasing / jitter off. Unknown or unsupported flags are warned about, never fatal.\n"
@@ -111,8 +114,10 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->set_help_flag("--help", "print this help");
   render->add_option("scene", o.input, "scene file (.pov)")->required();
   render->add_option("-o,--output", o.output, "output image (.png, .exr, .hdr); default: <scene>.png");
-  render->add_option("-w,--width", o.width, "image width in pixels (default 800)");
-  render->add_option("-h,--height", o.height, "image height in pixels (default 600)");
+  render->add_option("-w,--width", o.width, "image width in pixels (default 800)")
+      ->each([&o](const std::string&) { o.size_given = true; });
+  render->add_option("-h,--height", o.height, "image height in pixels (default 600)")
+      ->each([&o](const std::string&) { o.size_given = true; });
   render->add_option("--aa", o.aa_threshold, "anti-alias with this threshold (POV-Ray +A)")
       ->each([&o](const std::string&) { o.antialias = true; });
   render->add_option("--aa-depth", o.aa_depth,
@@ -125,6 +130,10 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   render->add_flag("--quiet", o.quiet, "no progress, warnings or statistics");
   render->add_flag("--stats", o.stats, "print statistics even with --quiet");
+  render->add_flag("--display", o.display, "show the render in a window (POV-Ray +D)");
+  render->add_option("--display-snapshot", o.display_snapshot)->group("");  // test hook: window pixels as PNG
+  render->add_flag("--watch", o.watch,
+                   "render again whenever the scene or a file it reads changes (320x240 unless -w/-h)");
   render->add_flag("--parse-only", o.parse_only,
                    "parse and build the scene, print a summary, render nothing");
   render->add_option("--start-row", o.start_row,
@@ -181,6 +190,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   po.declares = o.declares;
   po.max_while_iterations = o.max_loop;
   apply_frame(plan, task.number, po);
+  po.on_file_read = o.on_file_read;
   const scene::Scene scene = sdl::parse_scene_file(o.input, po);
   const double parse_s = seconds_since(t_parse);
   if (o.parse_only) {
@@ -209,6 +219,11 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   ro.region = {bounds.x0, bounds.y0, bounds.x1, bounds.y1};
   ro.cancel = &g_interrupted;
   Progress progress(!o.quiet);
+  io::WriteOptions wo;
+  wo.bits = o.bits;
+  wo.encoding.assumed_gamma = scene.effective_assumed_gamma();
+  wo.encoding.passthrough = scene.settings.assumed_gamma <= 0 && scene.settings.language_version < 3.7;
+  const std::unique_ptr<PreviewWindow> preview = o.display ? open_preview(o, wo.encoding) : nullptr;
 
   const uint64_t fingerprint = render_fingerprint(o, bounds);
   io::Image image(o.width, o.height);
@@ -230,6 +245,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   std::vector<bool> resumed_index(static_cast<size_t>(render::tiles_across(o.width)) *
                                   render::tiles_down(o.height));
   for (const render::Tile& t : resumed) resumed_index[static_cast<size_t>(t.index)] = true;
+  if (preview) show_in_preview(*preview, resumed, image);
   distributed::Job job{scene, *accelerator, ro, {}, {}};
   for (const render::Tile& t : render::make_tiles(o.width, o.height, ro.region))
     if (!resumed_index[static_cast<size_t>(t.index)]) job.tiles.push_back(t);
@@ -239,7 +255,9 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   job.tile_done = [&](const render::Tile& t) {
     checkpoint.tile_done(t);
     std::lock_guard lock(progress_mutex);
-    progress.update(static_cast<double>(++tiles_finished) / static_cast<double>(job.tiles.size()));
+    const double fraction = static_cast<double>(++tiles_finished) / static_cast<double>(job.tiles.size());
+    progress.update(fraction);
+    if (preview) show_in_preview(*preview, t, image, fraction);
   };
 
   const auto t_render = Clock::now();
@@ -251,10 +269,6 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   if (!task.whole_frame && distributed::rank() != 0) return result.cancelled ? kInterrupted : kOk;
 
   const auto t_write = Clock::now();
-  io::WriteOptions wo;
-  wo.bits = o.bits;
-  wo.encoding.assumed_gamma = scene.effective_assumed_gamma();
-  wo.encoding.passthrough = scene.settings.assumed_gamma <= 0 && scene.settings.language_version < 3.7;
   // Unrendered pixels (a partial or interrupted render) stay transparent; a full image is written as RGB.
   image.drop_alpha_if_covered();
   io::write_image(o.output, image, wo);
@@ -282,6 +296,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
                a.objects, a.unbounded_objects, a.nodes, static_cast<double>(a.memory_bytes) / 1024,
                a.build_seconds);
   }
+  if (preview) preview->finish(o.display_snapshot, o.pause_when_done, &g_interrupted);
   if (result.cancelled) {
     fmt::print(stderr,
                "snell: interrupted; the partial image was written to {} and the finished tiles to {}\n"
@@ -344,7 +359,7 @@ int run_app(const std::vector<std::string>& args) {
         throw UsageError(e.what());
       }
       o.accel = accel;
-      return render(o);
+      return o.watch ? watch_and_render(o, render, g_interrupted) : render(o);
     }
     if (!args.empty() && args[0] == "merge") return run_merge({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "explain") return run_explain({args.begin() + 1, args.end()});
@@ -361,7 +376,7 @@ int run_app(const std::vector<std::string>& args) {
       return args.empty() ? kUsageError : kOk;
     }
     CliOptions o = parse_pov_arguments(args);
-    return render(o);
+    return o.watch ? watch_and_render(o, render, g_interrupted) : render(o);
   } catch (...) {
     return report_current_exception();
   }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <system_error>
 
+#include "snell/io/image_file.hpp"
 #include "snell/render/resume_file.hpp"
 
 namespace snell::cli {
@@ -41,7 +42,12 @@ void Checkpoint::tile_done(const render::Tile& tile) {
 
 void Checkpoint::save() {
   std::lock_guard lock(mutex_);
-  save_locked();
+  // A resume file that cannot be written is an output error (exit code 3), like an image.
+  try {
+    save_locked();
+  } catch (const render::ResumeError& e) {
+    throw io::ImageIoError(e.what());
+  }
 }
 
 // Only finished tiles' pixels are read; workers write other tiles meanwhile, never these.

@@ -102,8 +102,14 @@ bool apply_ini_option(CliOptions& o, const std::string& key_as_written, const st
     o.output = value;
   } else if (key == "width") {
     o.width = static_cast<int>(number(key_as_written, value));
+    o.size_given = true;
   } else if (key == "height") {
     o.height = static_cast<int>(number(key_as_written, value));
+    o.size_given = true;
+  } else if (key == "display") {
+    o.display = truth(key_as_written, value);
+  } else if (key == "pause_when_done") {
+    o.pause_when_done = truth(key_as_written, value);
   } else if (key == "antialias") {
     o.antialias = truth(key_as_written, value);
   } else if (key == "antialias_threshold") {

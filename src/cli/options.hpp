@@ -2,6 +2,7 @@
 // Everything the `snell` command was asked to do, whichever syntax it came in (snell's own
 // `snell render ...` or POV-Ray's `+I... +W... +A...`).
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,17 @@ struct CliOptions {
   bool stats = false;
   /// Parse and build the scene, print a summary, render nothing (`--parse-only`).
   bool parse_only = false;
+  /// `+D` / `--display`: show the render in a window (src/cli/preview/); `+P`: keep it open until a key.
+  bool display = false;
+  bool pause_when_done = false;
+  /// Hidden test option `--display-snapshot FILE`: the window's pixels, read back at the end, as PNG.
+  std::filesystem::path display_snapshot;
+  /// `--watch`: render again whenever the scene or a file it reads changes (src/cli/watch.cpp).
+  bool watch = false;
+  /// True once +W/+H/Width=/Height=/-w/-h gave a size (--watch renders at a preview size otherwise).
+  bool size_given = false;
+  /// Called with every file the scene parser reads (the scene, includes, images, fonts, #fopen).
+  std::function<void(const std::filesystem::path&)> on_file_read;
   /// Partial render (POV-Ray +SR +ER +SC +EC), as written: "0.5" is a fraction of the image, "120" a
   /// 1-based pixel row or column (end inclusive). Empty: the image's edge.
   std::string start_row, end_row, start_col, end_col;

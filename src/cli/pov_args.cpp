@@ -41,7 +41,7 @@ bool starts_with(const std::string& s, const std::string& prefix) {
 constexpr const char* kUnsupported[] = {"Q",  "AM", "AG", "UA", "GA", "GD", "GF", "GR",  "GS", "GW", "K",
                                         "UV", "UR", "UF", "UD", "UO", "MB", "MV", "RVP", "HT", "HN", "HI"};
 /// Known switches without an effect on a batch render: accepted silently.
-constexpr const char* kIgnored[] = {"D", "P", "V", "X", "GP"};
+constexpr const char* kIgnored[] = {"V", "X", "GP"};
 
 }  // namespace
 
@@ -65,6 +65,12 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
         o.quiet = true;
       } else if (name == "--stats") {
         o.stats = true;
+      } else if (name == "--display") {
+        o.display = true;
+      } else if (name == "--display-snapshot") {
+        o.display_snapshot = eq == std::string::npos ? next_value(name) : value;
+      } else if (name == "--watch") {
+        o.watch = true;
       } else if (name == "--parse-only") {
         o.parse_only = true;
       } else if (name == "--threads") {
@@ -142,9 +148,11 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
       o.threads = parse_int(arg, rest_after(2));
     } else if (key[0] == 'W' && key.size() > 1) {
       o.width = parse_int(arg, rest_after(1));
+      o.size_given = true;
     } else if (key[0] == 'H' && key.size() > 1 && !starts_with(key, "HT") && !starts_with(key, "HN") &&
                !starts_with(key, "HI")) {
       o.height = parse_int(arg, rest_after(1));
+      o.size_given = true;
     } else if (key == "A" || (key[0] == 'A' && key.size() > 1 &&
                               (std::isdigit(static_cast<unsigned char>(key[1])) || key[1] == '.'))) {
       o.antialias = on;
@@ -160,6 +168,10 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
                               (std::isdigit(static_cast<unsigned char>(key[1])) || key[1] == '.'))) {
       o.jitter = on;
       if (key.size() > 1) o.jitter_amount = parse_double(arg, rest_after(1));
+    } else if ((key[0] == 'D' || key[0] == 'P') &&
+               (key.size() == 1 || std::isdigit(static_cast<unsigned char>(key[1])))) {
+      // +D display (POV-Ray's +D0 style palette digit is accepted and has no effect), +P pause when done
+      (key[0] == 'D' ? o.display : o.pause_when_done) = on;
     } else if (key[0] == 'F' && (key.size() == 1 || std::isalpha(static_cast<unsigned char>(key[1])))) {
       const std::string fmt = key.substr(1);
       if (fmt.empty() || fmt == "N" || fmt == "N8") {

@@ -1,6 +1,7 @@
 #include "snell/render/resume_file.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -64,7 +65,7 @@ void write_resume_file(const fs::path& path, uint64_t fingerprint, const io::Ima
   const fs::path temp = path.parent_path() / temp_name;
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw ResumeError("cannot write resume file '" + temp.string() + "'");
+    if (!out) throw ResumeError("cannot write resume file '" + path.string() + "': " + std::strerror(errno));
     out.write(kMagic, sizeof kMagic);
     put(out, kFormatVersion);
     put(out, fingerprint);

@@ -69,7 +69,10 @@ bool Parser::readable_user_file(const std::string& name) const {
 }
 
 std::filesystem::path Parser::user_file_path(const std::string& name, const Token& where, bool writing) {
-  if (const auto found = find_user_file(name, writing)) return *found;
+  if (const auto found = find_user_file(name, writing)) {
+    if (!writing && options_.on_file_read) options_.on_file_read(*found);
+    return *found;
+  }
   const std::filesystem::path given(name);
   if (given.is_absolute() || name.find("..") != std::string::npos)
     fail(where.where, "file '" + name +

@@ -95,6 +95,7 @@ ParsedObject Parser::parse_height_field(const Token& keyword) {
       return std::filesystem::is_regular_file(p, ec);
     });
     if (found == candidates.end()) fail(name.where, "cannot find height_field image \"" + file + "\"");
+    if (options_.on_file_read) options_.on_file_read(*found);
     try {
       grid = grid_from_image(*found);
     } catch (const std::exception& e) {

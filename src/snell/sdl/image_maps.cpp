@@ -73,6 +73,7 @@ std::shared_ptr<const material::Pigment> Parser::parse_image_map(double* bump_si
   for (const auto& c : candidates) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(c, ec)) continue;
+    if (options_.on_file_read) options_.on_file_read(c);
     auto image = std::make_shared<io::Image>();
     try {
       *image = io::read_image(c);

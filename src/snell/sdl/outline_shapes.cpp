@@ -231,7 +231,9 @@ std::shared_ptr<const geometry::Shape> Parser::parse_outline_shape(const Token& 
   }
   for (const auto& c : candidates) {
     std::error_code ec;
-    if (std::filesystem::is_regular_file(c, ec)) return shapes::text(c, text, thickness, offset);
+    if (!std::filesystem::is_regular_file(c, ec)) continue;
+    if (options_.on_file_read) options_.on_file_read(c);
+    return shapes::text(c, text, thickness, offset);
   }
   fail(font_where,
        "cannot find the font \"" + font + "\" (searched the scene's folder and the library paths)");

@@ -37,6 +37,8 @@ struct ParseOptions {
   }
   /// `Declare=NAME=value` from the command line / ini files.
   std::map<std::string, double> declares;
+  /// Called with each file the scene reads (itself, includes, images, fonts, #fopen), e.g. for --watch.
+  std::function<void(const std::filesystem::path&)> on_file_read;
   /// Receives each warning and `#debug` text, formatted; null prints to stderr.
   std::function<void(const std::string&)> message_sink;
   /// Guards against runaway scenes (each breach is a ParseError at the offending line).

@@ -45,6 +45,7 @@ std::shared_ptr<const std::vector<Token>> Parser::tokens_of(const std::string& n
 
 void Parser::push_file(const std::filesystem::path& path, Frame::Kind kind,
                        const scene::SourceLocation& site) {
+  if (options_.on_file_read) options_.on_file_read(path);
   const auto text = read_file(path);
   if (!text) fail(site, "cannot open file '" + path.string() + "'");
   Frame f;
