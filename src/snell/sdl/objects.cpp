@@ -30,7 +30,7 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
       w == "blob" || w == "mesh" || w == "mesh2" || w == "light_source" || w == "object" ||
       w == "isosurface" || w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" ||
-      w == "julia_fractal") {
+      w == "julia_fractal" || w == "particle_system" || w == "boids") {
     raw_next();
     return parse_object(t);
   }
@@ -73,6 +73,8 @@ ParsedObject Parser::parse_object(const Token& keyword) {
     o = parse_bicubic_patch(keyword);
   } else if (w == "julia_fractal") {
     o = parse_julia_fractal(keyword);
+  } else if (w == "particle_system" || w == "boids") {
+    o = w == "boids" ? parse_boids(keyword) : parse_particle_system(keyword);
   } else if (w == "object") {
     expect("{", "object");
     const Token& inner = peek();

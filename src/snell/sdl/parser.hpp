@@ -11,12 +11,18 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "snell/math/pcg32.hpp"
 #include "snell/sdl/diagnostics.hpp"
 #include "snell/sdl/parse.hpp"
 #include "snell/sdl/value.hpp"
+
+namespace snell::procedural {
+struct Emitter;
+class ObjectProbe;
+}  // namespace snell::procedural
 
 namespace snell::sdl {
 
@@ -304,6 +310,14 @@ class Parser {
   ParsedObject parse_height_field(const Token& keyword);
   ParsedObject parse_bicubic_patch(const Token& keyword);
   ParsedObject parse_julia_fractal(const Token& keyword);
+  // procedural blocks, snell extensions (particles_block.cpp, boids_block.cpp)
+  ParsedObject parse_particle_system(const Token& keyword);
+  void parse_particle_emitter(procedural::Emitter& emitter);
+  /// `mean +/- variance` (the variance optional, 0 when absent).
+  std::pair<double, double> parse_mean_variance();
+  ParsedObject parse_boids(const Token& keyword);
+  /// `{ objects }` after `context`: the scene objects they become, for a generator's ray queries.
+  procedural::ObjectProbe parse_probe_objects(const char* context);
   /// Sets o.shape from `make` (whose exceptions become errors at `keyword`), then reads the modifiers.
   ParsedObject finish_shape(ParsedObject o, const Token& keyword,
                             const std::function<std::shared_ptr<const geometry::Shape>()>& make);
