@@ -1,7 +1,7 @@
 // snell fire: a particle_system rendered as an emissive medium whose density is the particle cloud
 // (docs/procedural.md). Particles rise from a disc with buoyancy (negative gravity), turbulence and a
 // little drag; their colour goes from yellow-white to deep red and out, their size grows then shrinks.
-// Animate with clock: snell +Iscenes/fire.pov +Ofire.png +W320 +H240 +K0.5
+// Animate with clock: snell +Iscenes/fire.pov +Ofire.png +W320 +H240 +KI0.5
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #declare Seconds = 3 + 2 * clock;
@@ -16,7 +16,7 @@ particle_system {
   time Seconds step 1/30 seed 5
   color_map { [0 rgb <1, 0.85, 0.45>] [0.35 rgb <1, 0.45, 0.08>] [0.75 rgb <0.5, 0.06, 0.01>] [1 rgbt <0, 0, 0, 1>] }
   size_map { [0 0.7] [0.3 1] [1 0.5] }
-  render { media emission 2.2 samples 24 }
+  render { media emission 1.6 samples 24 }
 }
 
 // Logs under the flames, lit by a warm light where the fire is.

@@ -1,6 +1,6 @@
 // snell smoke: grey transparent spheres from a chimney, carried by wind through air drag, rising,
 // swirling in turbulence and a vortex, growing and fading with age (docs/procedural.md).
-// Animate with clock: snell +Iscenes/smoke.pov +Osmoke.png +W320 +H240 +K0.5
+// Animate with clock: snell +Iscenes/smoke.pov +Osmoke.png +W320 +H240 +KI0.5
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #declare Seconds = 6 + 2 * clock;
