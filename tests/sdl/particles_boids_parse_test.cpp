@@ -80,6 +80,9 @@ TEST(ParticlesParse, Errors) {
   EXPECT_NE(
       error_of("particle_system { emitter { point 0 rate 1 } time 1e9 step 1e-3 }").find("simulation steps"),
       std::string::npos);
+  EXPECT_NE(error_of("particle_system { emitter { point 0 rate 1e7 lifetime 0.001 } time 100 }")
+                .find("more than 100000000"),
+            std::string::npos);
   EXPECT_NE(error_of("boids { count 5 }").find("boid { object }"), std::string::npos);
   EXPECT_NE(error_of("boids { count 1e9 boid { sphere { 0, 1 } } }").find("boid count"), std::string::npos);
 }

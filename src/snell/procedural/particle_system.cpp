@@ -166,4 +166,13 @@ double peak_particle_estimate(const ParticleSettings& settings) {
   return total;
 }
 
+double total_particle_estimate(const ParticleSettings& settings) {
+  double total = 0;
+  for (const Emitter& e : settings.emitters) {
+    const double window = std::max(0.0, std::min(e.end, settings.time) - e.start);
+    total += e.rate * window + static_cast<double>(std::max(0LL, e.burst));
+  }
+  return total;
+}
+
 }  // namespace snell::procedural

@@ -120,4 +120,7 @@ std::vector<Particle> simulate_particles(const ParticleSettings& settings);
 /// refusing a system that would exceed a limit before simulating it.
 double peak_particle_estimate(const ParticleSettings& settings);
 
+/// The particles born from t = 0 to `settings.time`: the simulation's work.
+double total_particle_estimate(const ParticleSettings& settings);
+
 }  // namespace snell::procedural

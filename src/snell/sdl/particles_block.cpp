@@ -18,6 +18,7 @@ namespace {
 /// Hard ceilings on what a scene may ask for, so a typo cannot exhaust memory or time.
 constexpr double kMostParticles = 10'000'000;
 constexpr double kMostSteps = 1'000'000;
+constexpr double kMostBirths = 100'000'000;
 
 enum class ParticleLook { spheres, blob, media, streaks };
 
@@ -359,6 +360,8 @@ ParsedObject Parser::parse_particle_system(const Token& keyword) {
                             " particles at once, more than max_particles " +
                             std::to_string(settings.max_particles) +
                             "; lower the rates or raise max_particles");
+  if (procedural::total_particle_estimate(settings) > kMostBirths)
+    fail(keyword.where, "this particle_system would create more than 100000000 particles up to its time");
   if (fade_threshold)
     settings.dies = [look, threshold = *fade_threshold](const procedural::Particle& p) {
       return intensity(look.color(p)) < threshold;
