@@ -31,7 +31,7 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
       w == "blob" || w == "mesh" || w == "mesh2" || w == "light_source" || w == "object" ||
       w == "isosurface" || w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" ||
-      w == "julia_fractal" || w == "lsystem") {
+      w == "julia_fractal" || w == "lsystem" || w == "particle_system" || w == "boids") {
     raw_next();
     return parse_object(t);
   }
@@ -76,6 +76,8 @@ ParsedObject Parser::parse_object(const Token& keyword) {
     o = parse_julia_fractal(keyword);
   } else if (w == "lsystem") {
     o = parse_lsystem(keyword);
+  } else if (w == "particle_system" || w == "boids") {
+    o = w == "boids" ? parse_boids(keyword) : parse_particle_system(keyword);
   } else if (w == "object") {
     expect("{", "object");
     const Token& inner = peek();

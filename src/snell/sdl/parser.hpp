@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "snell/math/pcg32.hpp"
@@ -21,6 +22,10 @@
 namespace snell::geometry {
 struct HeightGrid;
 }
+namespace snell::procedural {
+struct Emitter;
+class ObjectProbe;
+}  // namespace snell::procedural
 
 namespace snell::sdl {
 
@@ -325,6 +330,14 @@ class Parser {
   ParsedObject parse_bicubic_patch(const Token& keyword);
   ParsedObject parse_julia_fractal(const Token& keyword);
   ParsedObject parse_lsystem(const Token& keyword);  // lsystem_block.cpp
+  // procedural blocks, snell extensions (particles_block.cpp, boids_block.cpp)
+  ParsedObject parse_particle_system(const Token& keyword);
+  void parse_particle_emitter(procedural::Emitter& emitter);
+  /// `mean +/- variance` (the variance optional, 0 when absent).
+  std::pair<double, double> parse_mean_variance();
+  ParsedObject parse_boids(const Token& keyword);
+  /// `{ objects }` after `context`: the scene objects they become, for a generator's ray queries.
+  procedural::ObjectProbe parse_probe_objects(const char* context);
   /// Sets o.shape from `make` (whose exceptions become errors at `keyword`), then reads the modifiers.
   ParsedObject finish_shape(ParsedObject o, const Token& keyword,
                             const std::function<std::shared_ptr<const geometry::Shape>()>& make);
