@@ -66,7 +66,7 @@ TEST_F(MpiTest, AKilledRankEndsTheJobWithAnErrorNotAHang) {
   const fs::path scene = fs::path(SNELL_SOURCE_DIR) / "scenes/showcase.pov";
   const fs::path pid_file = dir_ / "mpirun.pid";
   // Large enough to be still rendering when a rank is killed; `timeout` turns a hang into exit code 124.
-  const std::string command = "timeout 120 " + kMpirun + SNELL_BINARY + " +I" + scene.string() +
+  const std::string command = "timeout -k 10 120 " + kMpirun + SNELL_BINARY + " +I" + scene.string() +
                               " +W1600 +H1200 +A0.1 --quiet +O" + (dir_ / "out.png").string() +
                               " & echo $! > " + pid_file.string() + "; wait $!";
   std::thread killer([&] {
@@ -115,7 +115,7 @@ TEST_F(MpiTest, ASceneErrorInOneWholeFrameEndsTheJobWithItsMessage) {
   // Only the rank given frame 3 or 4 sees the error; it prints it and aborts the job, nobody waits for it.
   const fs::path scene = dir_ / "late_error.pov";
   std::ofstream(scene) << "#if (clock > 0.5) #error \"too late\" #end\nsphere { 0, 1 pigment { rgb 1 } }\n";
-  const auto r = test::run_command("timeout 120 " + kMpirun + SNELL_BINARY + " +I" + scene.string() +
+  const auto r = test::run_command("timeout -k 10 120 " + kMpirun + SNELL_BINARY + " +I" + scene.string() +
                                    " +W8 +H8 +KFI1 +KFF4 +O" + (dir_ / "e.png").string());
   EXPECT_EQ(r.code, 1) << r.output;
   EXPECT_NE(r.output.find("late_error.pov:1:19: error: #error: too late"), std::string::npos) << r.output;
@@ -135,13 +135,13 @@ TEST_F(MpiTest, AfterAKilledRankContinueRendersOnlyTheMissingTiles) {
     test::run_command("pkill -KILL -n -f '^" + std::string(SNELL_BINARY) + " .*" +
                       (dir_ / "out.exr").string() + "'");
   });
-  const auto killed = test::run_command("timeout 120 " + render + " --quiet");
+  const auto killed = test::run_command("timeout -k 10 120 " + render + " --quiet");
   killer.join();
   if (killed.code == 0) GTEST_SKIP() << "the render finished before a rank was killed";
   ASSERT_NE(killed.code, 124) << "the job hung after a rank died";
   ASSERT_TRUE(fs::exists(resume_file)) << killed.output;
 
-  const auto resumed = test::run_command("timeout 120 " + render + " +C");
+  const auto resumed = test::run_command("timeout -k 10 120 " + render + " +C");
   ASSERT_EQ(resumed.code, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("continuing: "), std::string::npos) << resumed.output;
   EXPECT_EQ(resumed.output.find("continuing: 0 tiles"), std::string::npos) << resumed.output;
