@@ -123,6 +123,15 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("--aa-depth", o.aa_depth,
                      "supersampling depth: depth^2 extra rays (POV-Ray +R, default 3)");
   render->add_flag("--jitter", o.jitter, "jitter supersamples (POV-Ray +J)");
+  render->add_option("--aa-method", o.aa_method, "anti-aliasing method 1 or 2 (POV-Ray +AM, default 1)");
+  render->add_option(
+      "--spp", o.samples_per_pixel,
+      "N samples in every pixel (over pixel, lens and shutter) instead of POV-Ray anti-aliasing");
+  render->add_option("--sampler", o.sampler,
+                     "sample sequence for --spp and blur: sobol (default), halton, stratified");
+  render->add_option(
+      "--filter", o.filter,
+      "pixel filter NAME[:RADIUS]: box (default, 0.5), tent (1), gaussian (1.5), mitchell (2)");
   render->add_option("--threads", o.threads, "render threads (default: all cores)");
   render->add_option("--accel", accel,
                      "ray accelerator: embree, bvh, octree, grid or none (default: embree when built)");
@@ -215,6 +224,10 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   ro.aa_depth = o.aa_depth;
   ro.jitter = o.jitter;
   ro.jitter_amount = o.jitter_amount;
+  ro.aa_method = o.aa_method;
+  ro.samples_per_pixel = o.samples_per_pixel;
+  ro.sampler = o.sampler;
+  ro.filter = o.filter;
   ro.threads = o.threads;
   ro.region = {bounds.x0, bounds.y0, bounds.x1, bounds.y1};
   ro.cancel = &g_interrupted;

@@ -116,6 +116,8 @@ bool apply_ini_option(CliOptions& o, const std::string& key_as_written, const st
     o.aa_threshold = number(key_as_written, value);
   } else if (key == "antialias_depth") {
     o.aa_depth = static_cast<int>(number(key_as_written, value));
+  } else if (key == "sampling_method") {
+    o.aa_method = static_cast<int>(number(key_as_written, value)) == 2 ? 2 : 1;
   } else if (key == "jitter") {
     o.jitter = truth(key_as_written, value);
   } else if (key == "library_path") {

@@ -26,6 +26,10 @@ struct CliOptions {
   int aa_depth = 3;
   bool jitter = false;
   double jitter_amount = 1.0;
+  int aa_method = 1;              // POV-Ray +AM1 / +AM2
+  int samples_per_pixel = 0;      // --spp N (0: POV-Ray anti-aliasing)
+  std::string sampler = "sobol";  // --sampler
+  std::string filter = "box";     // --filter NAME[:RADIUS]
   int threads = 0;
   std::string accel = "auto";  // auto: embree when built, else brute force
   int bits = 8;

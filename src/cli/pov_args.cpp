@@ -38,7 +38,7 @@ bool starts_with(const std::string& s, const std::string& prefix) {
 }
 
 /// POV-Ray switches that snell knows but does not implement: accepted with a warning.
-constexpr const char* kUnsupported[] = {"Q",  "AM", "AG", "UA", "GA", "GD", "GF", "GR",  "GS", "GW", "K",
+constexpr const char* kUnsupported[] = {"Q",  "AG", "UA", "GA", "GD", "GF", "GR", "GS",  "GW", "K",
                                         "UV", "UR", "UF", "UD", "UO", "MB", "MV", "RVP", "HT", "HN", "HI"};
 /// Known switches without an effect on a batch render: accepted silently.
 constexpr const char* kIgnored[] = {"V", "X", "GP"};
@@ -91,6 +91,12 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
         o.fps = parse_double(name, eq == std::string::npos ? next_value(name) : value);
       } else if (name == "--accel") {
         o.accel = eq == std::string::npos ? next_value(name) : value;
+      } else if (name == "--spp") {
+        o.samples_per_pixel = parse_int(name, eq == std::string::npos ? next_value(name) : value);
+      } else if (name == "--sampler") {
+        o.sampler = eq == std::string::npos ? next_value(name) : value;
+      } else if (name == "--filter") {
+        o.filter = eq == std::string::npos ? next_value(name) : value;
       } else {
         o.warnings.push_back("unknown option '" + arg + "' ignored");
       }
@@ -159,7 +165,9 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
       if (key.size() > 1) o.aa_threshold = parse_double(arg, rest_after(1));
     } else if (starts_with(key, "AM")) {
       const int method = key.size() > 2 ? parse_int(arg, rest_after(2)) : 1;
-      if (method != 1)
+      if (method == 1 || method == 2)
+        o.aa_method = method;
+      else
         o.warnings.push_back("anti-aliasing method " + std::to_string(method) +
                              " is not supported; using method 1");
     } else if (key[0] == 'R' && key.size() > 1 && std::isdigit(static_cast<unsigned char>(key[1]))) {

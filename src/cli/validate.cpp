@@ -3,6 +3,8 @@
 
 #include "cli/options.hpp"
 #include "snell/io/image_file.hpp"
+#include "snell/render/filter.hpp"
+#include "snell/render/sampler.hpp"
 
 namespace snell::cli {
 
@@ -18,6 +20,16 @@ void validate(CliOptions& o) {
   if (o.aa_depth < 1 || o.aa_depth > 9) throw UsageError("anti-aliasing depth must be between 1 and 9");
   if (o.jitter_amount < 0) throw UsageError("jitter amount must not be negative");
   if (o.threads < 0) throw UsageError("thread count must not be negative");
+  if (o.aa_method != 1 && o.aa_method != 2) throw UsageError("anti-aliasing method must be 1 or 2");
+  if (o.samples_per_pixel < 0 || o.samples_per_pixel > 1 << 20)
+    throw UsageError("--spp must be between 0 and 1048576");
+  if (!render::make_sampler(o.sampler))
+    throw UsageError("unknown sampler '" + o.sampler + "' (expected " + std::string(render::kSamplerNames) +
+                     ")");
+  if (!render::Filter::parse(o.filter))
+    throw UsageError(
+        "bad filter '" + o.filter +
+        "' (expected box, tent, gaussian or mitchell, optionally :RADIUS with 0 < RADIUS <= 16)");
   if (o.checkpoint_seconds < 0) throw UsageError("checkpoint interval must not be negative");
   if (o.bits != 8 && o.bits != 16) throw UsageError("bit depth must be 8 or 16");
   if (o.accel != "auto" && o.accel != "embree" && o.accel != "bvh" && o.accel != "octree" &&

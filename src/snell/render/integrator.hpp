@@ -17,6 +17,8 @@ namespace snell::render {
 /// Per-thread scratch for tracing: the sample's random numbers and the ray counters.
 struct TraceContext {
   math::Pcg32 rng;
+  /// The camera ray's shutter time: every ray it spawns (shadow, reflected, refracted) sees the scene then.
+  double time = 0;
   RayCounters counters;
   /// Null in normal renders; set by `snell explain` and the AOV layers to watch the rays
   /// (trace_observer.hpp).

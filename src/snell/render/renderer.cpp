@@ -18,6 +18,7 @@
 
 #include "snell/math/pcg32.hpp"
 #include "snell/render/integrator.hpp"
+#include "snell/render/pixel_estimators.hpp"
 #include "snell/scene/blur_confidence.hpp"
 #include "snell/scene/lens_samples.hpp"
 
@@ -66,6 +67,17 @@ Renderer::Renderer(const scene::Scene& scene, const accel::Accelerator& accelera
   if (options_.aa_depth < 1 || options_.aa_depth > 9)
     throw std::invalid_argument("anti-aliasing depth must be between 1 and 9");
   if (options_.threads < 0) throw std::invalid_argument("thread count must not be negative");
+  if (options_.aa_method != 1 && options_.aa_method != 2)
+    throw std::invalid_argument("anti-aliasing method must be 1 or 2");
+  if (options_.samples_per_pixel < 0 || options_.samples_per_pixel > 1 << 20)
+    throw std::invalid_argument("samples per pixel must be between 0 and 1048576");
+  if (!make_sampler(options_.sampler))
+    throw std::invalid_argument("unknown sampler '" + options_.sampler + "' (" + std::string(kSamplerNames) +
+                                ")");
+  if (!Filter::parse(options_.filter))
+    throw std::invalid_argument(
+        "unknown filter '" + options_.filter +
+        "' (box, tent, gaussian or mitchell, optionally :RADIUS with 0 < RADIUS <= 16)");
   if (!options_.region.empty() && region().empty())
     throw std::invalid_argument("the render region lies outside the image");
 }
@@ -98,8 +110,15 @@ RenderStats Renderer::render_into(io::Image& image) const {
     throw std::invalid_argument("render target does not match the image size");
   std::vector<Tile> tiles;
   if (!options_.tile_source) tiles = make_tiles(w, h, region());
-  // Focal blur samples already spread over each pixel, so they are its anti-aliasing too.
-  const bool antialias = options_.antialias && !scene_.camera.focal_blur();
+  // Focal blur, motion blur and --spp samples already spread over each pixel, so they are its
+  // anti-aliasing too.
+  const scene::CameraSpec& cam = scene_.camera;
+  const int spp = options_.samples_per_pixel;
+  const bool antialias = options_.antialias && !cam.focal_blur() && !cam.motion_blur() && spp == 0;
+  const auto sampler = make_sampler(options_.sampler);
+  const Filter filter = *Filter::parse(options_.filter);
+  const CameraSampling sampling{*camera, cam, *integrator,    *sampler,      filter,
+                                w,       h,   options_.frame, options_.seed, options_.time};
 
   RenderStats stats;
   tbb::enumerable_thread_specific<TraceContext> contexts;
@@ -130,7 +149,6 @@ RenderStats Renderer::render_into(io::Image& image) const {
   // Focal blur (POV-Ray "Focal Blur"): rays from points spread over the lens and over the pixel, taken in
   // batches until the pixel's mean colour is known well enough (confidence, variance) or blur_samples are
   // spent. Seeded by pixel and sample so images do not depend on threads.
-  const scene::CameraSpec& cam = scene_.camera;
   const bool focal_blur = cam.focal_blur();
   const std::vector<double> thresholds =
       focal_blur ? scene::blur_variance_thresholds(cam.blur_samples, cam.confidence, cam.variance)
@@ -149,7 +167,8 @@ RenderStats Renderer::render_into(io::Image& image) const {
         ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(n) + 1, frame, options_.seed), kStream);
         const double dx = ctx.rng.next_double(), dy = ctx.rng.next_double();
         const math::Vec2 lens = scene::lens_sample(n, shift_u, shift_v);
-        const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, options_.time);
+        const double time = sampling.shutter_time(sampling.pixel_seed(x, y), n, cam.blur_samples);
+        const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, time);
         const Color c = ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
         sum += c;
         sum_sq += Color{c.r * c.r, c.g * c.g, c.b * c.b};
@@ -163,9 +182,33 @@ RenderStats Renderer::render_into(io::Image& image) const {
     return sum / static_cast<double>(n);
   };
 
-  // Pass 1: one ray through each pixel centre (or the focal blur samples).
+  // Pass 1: one ray through each pixel centre (or the --spp, focal blur or motion blur samples).
   auto first_sample = [&](int x, int y, TraceContext& ctx) {
-    return focal_blur ? blurred_pixel(x, y, ctx) : trace_point((x + 0.5) / w, (y + 0.5) / h, ctx);
+    if (spp > 0) return sampling.filtered_pixel(x, y, spp, ctx);
+    if (focal_blur) return blurred_pixel(x, y, ctx);
+    if (cam.motion_blur()) return sampling.filtered_pixel(x, y, cam.shutter_samples, ctx);
+    return trace_point((x + 0.5) / w, (y + 0.5) / h, ctx);
+  };
+
+  // POV-Ray's method 2: samples at the pixel corners (shared by neighbours, and the same whichever tile
+  // traces them, since trace_point seeds by position), subdivided where they differ.
+  auto render_adaptive = [&](const PixelRect& t, TraceContext& ctx) {
+    const int cw = t.x1 - t.x0 + 1;
+    std::vector<Color> corner(static_cast<size_t>(cw) * static_cast<size_t>(t.y1 - t.y0 + 1));
+    auto at = [&](int x, int y) -> Color& { return corner[static_cast<size_t>(y - t.y0) * cw + (x - t.x0)]; };
+    for (int y = t.y0; y <= t.y1; ++y)
+      for (int x = t.x0; x <= t.x1; ++x)
+        at(x, y) = trace_point(static_cast<double>(x) / w, static_cast<double>(y) / h, ctx);
+    const std::function<Color(double, double)> trace = [&](double px, double py) {
+      return trace_point(px / w, py / h, ctx);
+    };
+    for (int y = t.y0; y < t.y1; ++y)
+      for (int x = t.x0; x < t.x1; ++x) {
+        const Color c[4] = {at(x, y), at(x + 1, y), at(x, y + 1), at(x + 1, y + 1)};
+        image.set(x, y,
+                  adaptive_pixel(x, y, c, options_.aa_depth - 1, options_.aa_threshold,
+                                 options_.jitter ? options_.jitter_amount : 0.0, options_.seed, trace));
+      }
   };
 
   // Pass 2 (POV-Ray "Anti-Aliasing Options", method 1): a pixel that differs from a neighbour by more than
@@ -201,7 +244,9 @@ RenderStats Renderer::render_into(io::Image& image) const {
 #endif
     TraceContext& ctx = contexts.local();
     const PixelRect& t = tile.rect;
-    if (!antialias) {
+    if (antialias && options_.aa_method == 2) {
+      render_adaptive(t, ctx);
+    } else if (!antialias) {
       for (int y = t.y0; y < t.y1; ++y)
         for (int x = t.x0; x < t.x1; ++x) image.set(x, y, first_sample(x, y, ctx));
     } else {

@@ -27,6 +27,14 @@ struct RenderOptions {
   int aa_depth = 3;
   bool jitter = false;
   double jitter_amount = 1.0;
+  /// POV-Ray +AM: 1 (supersample pixels that differ from a neighbour) or 2 (adaptive recursive subdivision
+  /// from the pixel corners, aa_depth - 1 levels deep).
+  int aa_method = 1;
+  /// --spp N: every pixel takes N samples (over pixel, lens and shutter) from `sampler`, weighted by
+  /// `filter`; 0 keeps POV-Ray's anti-aliasing. `filter` also weights motion-blur samples.
+  int samples_per_pixel = 0;
+  std::string sampler = "sobol";
+  std::string filter = "box";
   /// 0 = all cores.
   int threads = 0;
   uint64_t seed = 0;

@@ -56,7 +56,7 @@ double max_abs(const Color& c) {
 
 material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
   // Layered textures composite inside Texture::pigment_at; the top layer's finish lights the result.
-  return hit.object->texture->pigment_at(hit.point, hit.normal, hit.uv);
+  return hit.object->texture->pigment_at(hit.texture_point, hit.normal, hit.uv);
 }
 
 /// Tells the observer the emitted and ambient parts of a surface's own light; `colour` is the pigment
@@ -100,6 +100,7 @@ WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Acc
 
 Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context) const {
   ++context.counters.camera;
+  context.time = ray.time;
   if (!has_atmosphere_) return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context);
   // POV-Ray starts camera rays inside every object that contains the camera (tracepixel.cpp,
   // InitRayContainerState): fog and media then skip cameras inside solids that are not hollow, and media
@@ -109,8 +110,8 @@ Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context)
 }
 
 bool WhittedIntegrator::crosses_projection(const scene::Light& light, const Vec3& point,
-                                           const LightRay& toward) const {
-  const Ray ray{point, toward.direction, 0.0};
+                                           const LightRay& toward, double time) const {
+  const Ray ray{point, toward.direction, time};
   for (const auto& object : light.projected_through) {
     scene::SurfaceHit hit;
     if (object->intersect(ray, 0.0, toward.distance, hit)) return true;
@@ -165,13 +166,14 @@ Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const 
 
 Color WhittedIntegrator::shadowed(const scene::Light& light, const Vec3& point, const Vec3& normal,
                                   const LightRay& toward, const Color& colour, TraceContext& context) const {
-  ObservedRay observed(context.observer, RayKind::shadow, {point, toward.direction, 0.0}, 0, 1.0, &light);
-  if (!light.projected_through.empty() && !crosses_projection(light, point, toward)) return Color(0);
+  ObservedRay observed(context.observer, RayKind::shadow, {point, toward.direction, context.time}, 0, 1.0, &light);
+  if (!light.projected_through.empty() && !crosses_projection(light, point, toward, context.time))
+    return Color(0);
   Color c = shadow_filter(point, normal, toward.direction, toward.distance, colour, context);
   // `media_attenuation`: the atmosphere's media and fog thin the light on its way (trace.cpp,
   // TraceShadowRay and ComputeShadowMedia; fog adds no colour to a shadow ray).
   if (light.media_attenuation && max_abs(c) >= kEpsilon) {
-    const Ray shadow_ray{point, toward.direction, 0.0};
+    const Ray shadow_ray{point, toward.direction, context.time};
     const double depth = std::min(toward.distance, kSkyDepth);
     if (!atmosphere_.empty()) c *= media_transmittance(atmosphere_, shadow_ray, depth);
     if (!scene_.fogs.empty()) c *= fogs_along(scene_.fogs, shadow_ray, depth).through;
@@ -184,7 +186,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   ShadingPoint sp;
   sp.ray = &ray;
   sp.hit = &hit;
-  sp.finish = &hit.object->texture->finish_at(hit.point);
+  sp.finish = &hit.object->texture->finish_at(hit.texture_point);
   sp.point = hit.point;
   sp.raw_normal = hit.normal;
   Vec3 shape_normal = hit.shading_normal;
@@ -197,7 +199,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   if (dot(shape_normal, ray.direction) > 0) shape_normal = sp.raw_normal;
   // The texture's normal then bends the oriented normal, as POV-Ray perturbs its flipped raw normal
   // (trace.cpp: layNormal = rawnormal; Perturb_Normal); a bump may face away, and it keeps it.
-  sp.normal = hit.object->texture->shading_normal(hit.point, shape_normal, hit.uv);
+  sp.normal = hit.object->texture->shading_normal(hit.texture_point, shape_normal, hit.uv);
   sp.pigment = pigment_at(hit);
   sp.observer = context.observer;
   const material::Rgbft& pc = sp.pigment;
@@ -462,7 +464,7 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   // TracePointLightShadowRay / ComputeShadowColour). Bounded so that coincident surfaces cannot loop.
   for (int crossings = 0; crossings < 64 && remaining > 0; ++crossings) {
     scene::SurfaceHit hit;
-    if (!accel_.intersect({origin, dir, 0.0}, 0.0, remaining, RayKind::shadow, hit)) break;
+    if (!accel_.intersect({origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit)) break;
     const material::Rgbft c = pigment_at(hit);
     if (context.observer) context.observer->shadow_blocker(hit, !c.is_transparent());
     if (!c.is_transparent()) return Color(0);

@@ -56,7 +56,8 @@ class WhittedIntegrator final : public Integrator {
   const scene::Scene& scene_;
   const accel::Accelerator& accel_;
   /// Whether the ray from `point` towards the light crosses its projected_through object.
-  bool crosses_projection(const scene::Light& light, const math::Vec3& point, const LightRay& toward) const;
+  bool crosses_projection(const scene::Light& light, const math::Vec3& point, const LightRay& toward,
+                          double time) const;
   /// The scene's objects that contain `point`, in scene order.
   InteriorStack containing(const math::Vec3& point) const;
 

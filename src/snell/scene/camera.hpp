@@ -47,7 +47,14 @@ struct CameraSpec {
   /// parser resolves it; a camera built without one focuses at the length of `direction`).
   double focal_distance = -1;
 
+  // Motion blur (a snell extension, docs/language.md "Motion blur"): rays get times spread over
+  // [shutter_open, shutter_close]; each pixel takes shutter_samples of them (or --spp samples).
+  double shutter_open = 0;
+  double shutter_close = 0;
+  int shutter_samples = 16;
+
   bool focal_blur() const { return aperture != 0 && blur_samples > 0; }
+  bool motion_blur() const { return shutter_close > shutter_open; }
 };
 
 /// Makes primary rays. (sx, sy) are image-plane coordinates in [0,1]^2 with y growing downward

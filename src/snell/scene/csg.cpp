@@ -26,17 +26,17 @@ Csg::Csg(CsgKind kind, std::vector<std::shared_ptr<const Object>> children, size
   }
 }
 
-bool Csg::keeps(size_t i, const math::Vec3& p) const {
+bool Csg::keeps(size_t i, const math::Vec3& p, double time) const {
   switch (kind_) {
     case CsgKind::union_of:
       return true;
     case CsgKind::merge:
       for (size_t j = 0; j < children_.size(); ++j)
-        if (j != i && children_[j]->inside(p)) return false;
+        if (j != i && children_[j]->inside(p, time)) return false;
       return true;
     case CsgKind::intersection:
       for (size_t j = 0; j < children_.size(); ++j)
-        if (j != i && !children_[j]->inside(p)) return false;
+        if (j != i && !children_[j]->inside(p, time)) return false;
       return true;
   }
   return true;
@@ -57,7 +57,7 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
     hits.clear();
     child.all_hits(ray, t_min, t_max, hits);
     for (const SurfaceHit& h : hits) {
-      if (!keeps(i, h.point)) continue;
+      if (!keeps(i, h.point, ray.time)) continue;
       hit = h;
       t_max = h.t;
       found = true;
@@ -74,20 +74,20 @@ void Csg::all_hits(const math::Ray& ray, double t_min, double t_max, std::vector
     mine.clear();
     children_[i]->all_hits(ray, t_min, t_max, mine);
     for (const SurfaceHit& h : mine)
-      if (keeps(i, h.point)) hits.push_back(h);
+      if (keeps(i, h.point, ray.time)) hits.push_back(h);
   }
   std::stable_sort(hits.begin() + static_cast<std::ptrdiff_t>(first), hits.end(),
                    [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
 }
 
-bool Csg::inside(const math::Vec3& p) const {
+bool Csg::inside(const math::Vec3& p, double time) const {
   if (kind_ == CsgKind::intersection) {
     for (const auto& c : children_)
-      if (!c->inside(p)) return false;
+      if (!c->inside(p, time)) return false;
     return true;
   }
   for (const auto& c : children_)
-    if (c->inside(p)) return true;
+    if (c->inside(p, time)) return true;
   return false;
 }
 

@@ -34,7 +34,7 @@ class Csg {
   bool intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
   /// Every kept hit in (t_min, t_max), appended in increasing t.
   void all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const;
-  bool inside(const math::Vec3& world_point) const;
+  bool inside(const math::Vec3& world_point, double time = 0) const;
   /// World bounds: union of the children for union and merge, their overlap for an intersection (so a
   /// difference, whose later children are inverted and unbounded, gets the first child's bounds).
   const math::Bounds3& bounds() const { return bounds_; }
@@ -46,7 +46,7 @@ class Csg {
 
  private:
   /// Whether a hit on child `i` at `p` is a surface of the combined solid.
-  bool keeps(size_t i, const math::Vec3& p) const;
+  bool keeps(size_t i, const math::Vec3& p, double time) const;
 
   CsgKind kind_;
   std::vector<std::shared_ptr<const Object>> children_;

@@ -11,6 +11,15 @@ void flip(SurfaceHit& hit) {
   hit.shading_normal = -hit.shading_normal;
 }
 
+/// A hit of the still geometry (found with the ray moved back by d^-1) moved to where the object is at the
+/// ray's time: t is unchanged because the ray direction is not renormalised. `texture_point` stays where
+/// the still geometry was hit.
+void move_hit(SurfaceHit& hit, const Ray& ray, const math::Transform& d) {
+  hit.point = ray.at(hit.t);
+  hit.normal = normalize(d.normal(hit.normal));
+  hit.shading_normal = normalize(d.normal(hit.shading_normal));
+}
+
 }  // namespace
 
 SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& local) const {
@@ -24,6 +33,7 @@ SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& loca
                            : hit.normal;
   if (flags.inverse && length_squared(local.shading_normal) > 0) hit.shading_normal = -hit.shading_normal;
   hit.uv = local.uv;
+  hit.texture_point = hit.point;
   hit.object = this;
   hit.solid = this;
   hit.part = local.part;
@@ -31,6 +41,25 @@ SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& loca
 }
 
 bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
+  if (motion) {
+    const auto d = motion->at(ray.time);
+    if (!d || !intersect_still(d->inverse_ray(ray), t_min, t_max, hit)) return false;
+    move_hit(hit, ray, *d);
+    return true;
+  }
+  return intersect_still(ray, t_min, t_max, hit);
+}
+
+void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
+  if (!motion) return all_hits_still(ray, t_min, t_max, hits);
+  const auto d = motion->at(ray.time);
+  if (!d) return;
+  const size_t first = hits.size();
+  all_hits_still(d->inverse_ray(ray), t_min, t_max, hits);
+  for (size_t i = first; i < hits.size(); ++i) move_hit(hits[i], ray, *d);
+}
+
+bool Object::intersect_still(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
   if (csg) {
     if (!csg->intersect(ray, t_min, t_max, hit)) return false;
     if (flags.inverse) flip(hit);  // the leaf's own inverse is already in its normal
@@ -43,7 +72,7 @@ bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& h
   return true;
 }
 
-void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
+void Object::all_hits_still(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
   if (csg) {
     const size_t first = hits.size();
     csg->all_hits(ray, t_min, t_max, hits);
@@ -59,8 +88,8 @@ void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<Su
 }
 
 math::Bounds3 Object::world_bounds() const {
-  if (csg) return csg->bounds();
-  return transform.bounds(shape->bounds());
+  const math::Bounds3 still = csg ? csg->bounds() : transform.bounds(shape->bounds());
+  return motion ? motion->swept(still) : still;
 }
 
 math::Bounds3 Object::solid_bounds() const {
@@ -68,8 +97,14 @@ math::Bounds3 Object::solid_bounds() const {
   return csg ? csg->solid_bounds() : world_bounds();
 }
 
-bool Object::inside(const Vec3& world_point) const {
-  const bool in = csg ? csg->inside(world_point) : shape->inside(transform.inverse_point(world_point));
+bool Object::inside(const Vec3& world_point, double time) const {
+  Vec3 p = world_point;
+  if (motion) {
+    const auto d = motion->at(time);
+    if (!d) return flags.inverse;
+    p = d->inverse_point(p);
+  }
+  const bool in = csg ? csg->inside(p, time) : shape->inside(transform.inverse_point(p));
   return in != flags.inverse;
 }
 

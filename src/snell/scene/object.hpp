@@ -10,6 +10,7 @@
 #include "snell/material/interior.hpp"
 #include "snell/material/texture.hpp"
 #include "snell/math/transform.hpp"
+#include "snell/scene/motion.hpp"
 #include "snell/scene/source_location.hpp"
 
 namespace snell::scene {
@@ -41,6 +42,9 @@ struct SurfaceHit {
   /// Unit shading normal (smooth triangles); equals `normal` when the shape has none.
   Vec3 shading_normal;
   math::Vec2 uv;
+  /// Where textures are evaluated: `point` moved back to the object's still pose (equal to `point` for an
+  /// object without motion), so a moving object carries its texture along.
+  Vec3 texture_point;
   const Object* object = nullptr;
   /// The scene-level object whose solid this surface bounds: `object` itself, or the CSG object that
   /// contains it. Interiors are entered and left per solid (a ray may enter a glass merge through one
@@ -65,6 +69,8 @@ struct Object {
   /// World box of the object's `bounded_by` objects, if it has any: accelerators test the object only for
   /// rays that hit this box.
   std::optional<math::Bounds3> bounded_by;
+  /// Motion blur: where the geometry (and `bounded_by` box) is at a ray's time; null for a still object.
+  std::shared_ptr<const Motion> motion;
   /// The `#declare` name the object came from, if any; and where it was written.
   std::string name;
   SourceLocation where;
@@ -73,9 +79,11 @@ struct Object {
   bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
   /// Every hit with t in (t_min, t_max), appended in increasing t (for CSG).
   void all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const;
-  /// World-space bounds (infinite for unbounded shapes, or when a transform makes them so).
+  /// World-space bounds (infinite for unbounded shapes, or when a transform makes them so); for a moving
+  /// object, over all times.
   math::Bounds3 world_bounds() const;
-  bool inside(const Vec3& world_point) const;
+  /// Whether the point is inside the solid at `time` (the time matters only for moving objects).
+  bool inside(const Vec3& world_point, double time = 0) const;
   /// Bounds of the points `inside` accepts (infinite for inverted objects), for CSG bounds.
   math::Bounds3 solid_bounds() const;
   bool visible_to(RayKind kind) const {
@@ -91,6 +99,9 @@ struct Object {
     }
     return true;
   }
+  /// intersect and all_hits for the object's still geometry (no motion applied).
+  bool intersect_still(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
+  void all_hits_still(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const;
   /// Builds the world-space hit from a shape-space hit of `world_ray` (transformed into object space).
   SurfaceHit to_world(const Ray& world_ray, const geometry::LocalHit& local) const;
 };

@@ -609,6 +609,8 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
     o.flags.inverse = !o.flags.inverse;
   } else if (w == "clipped_by" || w == "bounded_by") {
     parse_clip_block(o, t);
+  } else if (w == "motion") {
+    parse_motion_block(o, t);
   } else if (w == "photons" || w == "radiosity" || w == "interior_texture") {
     warn(t.where, w + " is not supported yet; ignored");
     skip_block(w);

@@ -6,6 +6,7 @@ namespace snell::sdl {
 
 void ParsedObject::apply(const math::Transform& t) {
   transform = t * transform;
+  for (scene::MotionLayer& layer : motion) layer.frame = t * layer.frame;
   if (texture) texture = texture->transformed(t);
   interior = material::Interior::transformed(interior, t);
 }
@@ -47,7 +48,16 @@ struct Inherited {
   std::string name;
   /// World box of the `bounded_by` objects of this object and its ancestors, if any.
   std::optional<math::Bounds3> bounded_by;
+  /// Motion of this object and its ancestors up to the nearest CSG (which moves its children itself),
+  /// outermost first, framed in world space.
+  std::vector<scene::MotionLayer> motion;
 };
+
+/// `own` for the parts of a CSG object: the CSG object moves them, so they carry no inherited motion.
+Inherited without_motion(Inherited own) {
+  own.motion.clear();
+  return own;
+}
 
 /// The object's own values resolved against its parent's.
 Inherited resolve(const ParsedObject& o, const Inherited& parent) {
@@ -65,6 +75,11 @@ Inherited resolve(const ParsedObject& o, const Inherited& parent) {
   r.flags = merge(o.flags, parent.flags);
   r.name = o.name.empty() ? parent.name : o.name;
   r.bounded_by = parent.bounded_by;
+  r.motion = parent.motion;
+  for (scene::MotionLayer layer : o.motion) {
+    layer.frame = parent.to_world * layer.frame;
+    r.motion.push_back(std::move(layer));
+  }
   return r;
 }
 
@@ -95,6 +110,10 @@ std::shared_ptr<scene::Object> make_object(const ParsedObject& o, const Inherite
   object->name = own.name;
   object->where = o.where;
   object->bounded_by = own.bounded_by;
+  if (!own.motion.empty()) {
+    object->motion = std::make_shared<scene::Motion>(own.motion);
+    if (object->bounded_by) object->bounded_by = object->motion->swept(*object->bounded_by);
+  }
   return object;
 }
 
@@ -105,7 +124,7 @@ ObjectPtr build(const ParsedObject& o, const Inherited& parent, std::vector<scen
 void add_user_bounds(const ParsedObject& o, Inherited& own) {
   if (o.bounded_by.empty()) return;
   math::Bounds3 box = own.bounded_by.value_or(math::Bounds3::infinite());
-  Inherited space = own;
+  Inherited space = without_motion(own);
   space.flags = {};
   std::vector<scene::Light> ignored;
   for (const auto& bound : o.bounded_by)
@@ -127,7 +146,7 @@ ObjectPtr build(const ParsedObject& o, const Inherited& parent, std::vector<scen
   } else if (!o.children.empty()) {
     std::vector<ObjectPtr> children;
     for (const auto& child : o.children) {
-      ObjectPtr built = build(child, own, lights);
+      ObjectPtr built = build(child, without_motion(own), lights);
       if (!built) continue;
       // POV-Ray's difference is the intersection of the first child with the complements of the others.
       if (o.combine == ParsedObject::Combine::difference && !children.empty()) {
@@ -151,8 +170,9 @@ ObjectPtr build(const ParsedObject& o, const Inherited& parent, std::vector<scen
 
   // clipped_by: the object's surface where it lies inside every clipping object (POV-Ray reference,
   // "Clipped_By"); the clipping objects are in the object's space and show no surface of their own.
+  object->motion = nullptr;  // the clipped object moves as a whole
   std::vector<ObjectPtr> parts{object};
-  Inherited clip_parent = own;
+  Inherited clip_parent = without_motion(own);
   clip_parent.flags = {};
   for (const auto& clip : o.clipped_by)
     if (ObjectPtr built = build(clip, clip_parent, lights)) parts.push_back(std::move(built));

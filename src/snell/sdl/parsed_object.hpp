@@ -27,8 +27,10 @@ struct ParsedObject {
   std::vector<ParsedObject> clipped_by;
   /// `bounded_by` objects, in its own space: their box culls rays (accel), and `clipped_by { bounded_by }`.
   std::vector<ParsedObject> bounded_by;
-  /// Object space -> parent space.
+  /// Object space -> parent space, leaving out the motion blocks.
   math::Transform transform;
+  /// `motion { ... }` blocks (motion blur), their frames mapping each block's space to parent space.
+  std::vector<scene::MotionLayer> motion;
   /// Its transform maps texture space to parent space (the object's later transforms are folded in).
   std::shared_ptr<const material::Texture> texture;
   std::shared_ptr<const material::Interior> interior;

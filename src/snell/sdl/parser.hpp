@@ -345,6 +345,9 @@ class Parser {
   bool parse_object_modifier(ParsedObject& object);
   /// clipped_by { ... } / bounded_by { ... } after its keyword.
   void parse_clip_block(ParsedObject& object, const Token& keyword);
+  /// motion { ... } and the camera's shutter { ... } after their keyword (motion_blocks.cpp).
+  void parse_motion_block(ParsedObject& object, const Token& keyword);
+  void parse_shutter_block(scene::CameraSpec& camera, const Token& keyword);
   /// Adds `added`'s nodes to `nodes`, failing past ParseOptions::max_objects.
   void count_objects(long long& nodes, const ParsedObject& added, const scene::SourceLocation& where);
   void attach_pigment(ParsedObject& object, std::shared_ptr<const material::Pigment> pigment);

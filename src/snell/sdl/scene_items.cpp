@@ -250,7 +250,9 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
         cam.blur_samples = second;
       }
       if (cam.blur_samples > 4096) fail(t.where, "too many focal blur samples (at most 4096)");
-    } else if (w == "focal_point")
+    } else if (w == "shutter")
+      parse_shutter_block(cam, t);
+    else if (w == "focal_point")
       focal_point = parse_vector();
     else if (w == "confidence") {
       const double c = parse_float();
