@@ -20,6 +20,7 @@
 #include "snell/accel/accelerator.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
+#include "snell/memory/budget.hpp"
 #include "snell/render/renderer.hpp"
 #include "snell/render/resume_file.hpp"
 #include "snell/sdl/parse.hpp"
@@ -110,6 +111,9 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("--checkpoint", o.checkpoint_seconds,
                      "write the resume file every S seconds while rendering");
   render->add_option("--max-loop", o.max_loop, "most iterations of one #while or #for (default 10 million)");
+  render->add_option(
+      "--max-memory", o.max_memory,
+      "memory the scene's meshes, images and arrays may take, e.g. 2G or 512M (default: 3/4 of RAM)");
   return app;
 }
 
@@ -145,6 +149,8 @@ int render(CliOptions& o) {
   po.image_height = o.height;
   po.declares = o.declares;
   po.max_while_iterations = o.max_loop;
+  po.memory_budget = std::make_shared<memory::Budget>(
+      o.max_memory.empty() ? memory::default_limit() : *memory::parse_size(o.max_memory));
   // One frame of the animation range: its number and clock (POV-Ray's animationprocessing.cpp rules).
   po.initial_frame = o.initial_frame;
   po.final_frame = std::max(o.final_frame, o.initial_frame);
@@ -241,6 +247,9 @@ int render(CliOptions& o) {
   if (!o.quiet)
     for (const auto& note : scene.render_notes)
       if (const std::string text = note(); !text.empty()) fmt::print(stderr, "{}\n", text);
+  if (result.rays.non_finite_samples > 0)  // the renderer's guard (render/finite_sample.hpp) fired
+    fmt::print(stderr, "snell: warning: {} samples were NaN or infinite and were rendered black\n",
+               result.rays.non_finite_samples);
   if (!o.quiet || o.stats) {
     const render::RayCounters& r = result.rays;
     fmt::print(stderr,

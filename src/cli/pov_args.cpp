@@ -77,6 +77,8 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
       } else if (name == "--max-loop") {
         o.max_loop = parse_int(name, eq == std::string::npos ? next_value(name) : value);
         if (o.max_loop < 1) throw UsageError("--max-loop needs a positive number");
+      } else if (name == "--max-memory") {
+        o.max_memory = eq == std::string::npos ? next_value(name) : value;
       } else if (name == "--accel") {
         o.accel = eq == std::string::npos ? next_value(name) : value;
       } else {

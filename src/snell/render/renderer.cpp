@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "snell/math/pcg32.hpp"
+#include "snell/render/finite_sample.hpp"
 #include "snell/render/integrator.hpp"
 #include "snell/scene/blur_confidence.hpp"
 #include "snell/scene/lens_samples.hpp"
@@ -102,7 +103,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
                                 static_cast<uint64_t>(options_.frame), options_.seed),
                  0x5851f42d4c957f2dULL);
     const auto ray = camera->generate_ray(sx, sy, options_.time);
-    return ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
+    return ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx), ctx.counters) : Color{0, 0, 0};
   };
 
   // Focal blur (POV-Ray "Focal Blur"): rays from points spread over the lens and over the pixel, taken in
@@ -128,7 +129,8 @@ RenderStats Renderer::render_into(io::Image& image) const {
         const double dx = ctx.rng.next_double(), dy = ctx.rng.next_double();
         const math::Vec2 lens = scene::lens_sample(n, shift_u, shift_v);
         const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, options_.time);
-        const Color c = ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
+        const Color c =
+            ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx), ctx.counters) : Color{0, 0, 0};
         sum += c;
         sum_sq += Color{c.r * c.r, c.g * c.g, c.b * c.b};
       }
