@@ -2,6 +2,7 @@
 // Built with clang and -fsanitize=fuzzer,address,undefined by -DSNELL_FUZZ=ON (tools/fuzz.sh runs it);
 // the replay test in tests/fuzz/ calls the same entry point from a plain gcc build.
 #include "fuzz/parse_fuzzer.hpp"
+#include "fuzz/temp_folder.hpp"
 
 #include <unistd.h>
 
@@ -16,11 +17,7 @@ namespace {
 /// An empty private folder that plays the scene's folder: `#include "x"` relative to the scene finds
 /// nothing there, and nothing the parser could write would land outside it.
 const std::filesystem::path& scene_folder() {
-  static const std::filesystem::path folder = [] {
-    std::string pattern = (std::filesystem::temp_directory_path() / "snell-fuzz-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) std::abort();
-    return std::filesystem::path(pattern);
-  }();
+  static const std::filesystem::path folder = make_private_folder("snell-fuzz");
   return folder;
 }
 

@@ -26,6 +26,7 @@
 #include "snell/accel/accelerator.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
+#include "snell/memory/budget.hpp"
 #include "snell/render/renderer.hpp"
 #include "snell/render/resume_file.hpp"
 #include "snell/sdl/parse.hpp"
@@ -181,6 +182,9 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("--video", o.video, "animation: join the frames into this video with ffmpeg (.mp4)");
   render->add_option("--fps", o.fps, "frames per second of --video (default 24)");
   render->add_option("--max-loop", o.max_loop, "most iterations of one #while or #for (default 10 million)");
+  render->add_option(
+      "--max-memory", o.max_memory,
+      "memory the scene's meshes, images and arrays may take, e.g. 2G or 512M (default: 3/4 of RAM)");
   return app;
 }
 
@@ -200,6 +204,8 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   po.max_while_iterations = o.max_loop;
   apply_frame(plan, task.number, po);
   po.on_file_read = o.on_file_read;
+  po.memory_budget = std::make_shared<memory::Budget>(
+      o.max_memory.empty() ? memory::default_limit() : *memory::parse_size(o.max_memory));
   const scene::Scene scene = sdl::parse_scene_file(o.input, po);
   const double parse_s = seconds_since(t_parse);
   if (o.parse_only) {
@@ -294,6 +300,9 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   if (!o.quiet)
     for (const auto& note : scene.render_notes)
       if (const std::string text = note(); !text.empty()) fmt::print(stderr, "{}\n", text);
+  if (result.rays.non_finite_samples > 0)  // the renderer's guard (render/finite_sample.hpp) fired
+    fmt::print(stderr, "snell: warning: {} samples were NaN or infinite and were rendered black\n",
+               result.rays.non_finite_samples);
   if (!o.quiet || o.stats) {
     const render::RayCounters& r = result.rays;
     fmt::print(stderr,

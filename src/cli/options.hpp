@@ -76,6 +76,9 @@ struct CliOptions {
   double fps = 24;
   /// `--max-loop N`: the most iterations one #while or #for may run before the scene is stopped.
   long max_loop = 10'000'000;
+  /// `--max-memory SIZE` ("2G", "512M"): what the scene's big arrays may take (memory/budget.hpp); empty:
+  /// three quarters of physical memory.
+  std::string max_memory;
   /// Warnings found while reading the command line (unknown or unsupported flags), printed unless quiet.
   std::vector<std::string> warnings;
 };

@@ -89,6 +89,8 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
         o.video = eq == std::string::npos ? next_value(name) : value;
       } else if (name == "--fps") {
         o.fps = parse_double(name, eq == std::string::npos ? next_value(name) : value);
+      } else if (name == "--max-memory") {
+        o.max_memory = eq == std::string::npos ? next_value(name) : value;
       } else if (name == "--accel") {
         o.accel = eq == std::string::npos ? next_value(name) : value;
       } else if (name == "--spp") {

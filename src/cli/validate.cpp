@@ -5,6 +5,7 @@
 #include "snell/io/image_file.hpp"
 #include "snell/render/filter.hpp"
 #include "snell/render/sampler.hpp"
+#include "snell/memory/budget.hpp"
 
 namespace snell::cli {
 
@@ -31,6 +32,9 @@ void validate(CliOptions& o) {
         "bad filter '" + o.filter +
         "' (expected box, tent, gaussian or mitchell, optionally :RADIUS with 0 < RADIUS <= 16)");
   if (o.checkpoint_seconds < 0) throw UsageError("checkpoint interval must not be negative");
+  if (!o.max_memory.empty() && !memory::parse_size(o.max_memory))
+    throw UsageError("--max-memory needs a size such as 2G, 512M or 100000000 (bytes), got '" + o.max_memory +
+                     "'");
   if (o.bits != 8 && o.bits != 16) throw UsageError("bit depth must be 8 or 16");
   if (o.accel != "auto" && o.accel != "embree" && o.accel != "bvh" && o.accel != "octree" &&
       o.accel != "grid" && o.accel != "none")

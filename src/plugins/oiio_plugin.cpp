@@ -88,8 +88,11 @@ extern "C" __attribute__((visibility("default"))) int snell_oiio_read(const char
   auto* rgba = static_cast<float*>(std::malloc(count * 4 * sizeof(float)));
   if (!rgba) return fail("out of memory", error, error_size);
   // Grey (1 or 2 channels) is replicated; alpha is the spec's alpha channel, or 1 where there is none.
-  const int alpha =
-      spec.alpha_channel >= 0 ? spec.alpha_channel : (channels == 2 || channels >= 4 ? channels - 1 : -1);
+  // A reader may name an alpha channel past the channels it delivers (found by fuzz/image_fuzzer.cpp on a
+  // GIF): only a channel that exists is used.
+  const int alpha = spec.alpha_channel >= 0 && spec.alpha_channel < channels
+                        ? spec.alpha_channel
+                        : (channels == 2 || channels >= 4 ? channels - 1 : -1);
   for (size_t p = 0; p < count; ++p) {
     for (int c = 0; c < 3; ++c) rgba[p * 4 + c] = all[p * channels + (channels < 3 ? 0 : c)];
     rgba[p * 4 + 3] = alpha >= 0 ? all[p * channels + alpha] : 1.0f;

@@ -35,7 +35,8 @@ TEST(SdlErrors, CommonMistakes) {
   has("sphere { 0, 1 pigment { facets } }", "pattern 'facets' is not supported yet");
   has("sphere { 0, sqrt(-1) }", "sqrt: negative argument");
   has("#macro M(A, B) sphere { A, B } #end M(1)", "macro M takes 2 parameter(s), called with 1");
-  has("sphere { 0, 1 matrix <0,0,0, 0,0,0, 0,0,0, 0,0,0> }", "singular matrix");
+  // An all-zero column only warns and becomes 1 (POV-Ray's Parse_Matrix); two equal columns stay singular.
+  has("sphere { 0, 1 matrix <1,1,0, 1,1,0, 0,0,1, 0,0,0> }", "singular matrix");
   has("camera { location 0 look_at 0 }", "camera location and look_at are the same point");
   has("cylinder { 0, 0, 1 }", "cylinder base and cap are the same point");
   has("sphere { 0, 1 } @", "unexpected character '@'");

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "snell/math/pcg32.hpp"
+#include "snell/render/finite_sample.hpp"
 #include "snell/render/renderer.hpp"
 
 namespace snell::render {
@@ -41,7 +42,8 @@ Color CameraSampling::filtered_pixel(int x, int y, int count, TraceContext& cont
     } else {
       ray = camera.generate_ray(sx, sy, t);
     }
-    const Color c = ray ? integrator.trace_camera_ray(*ray, context) : Color{0, 0, 0};
+    const Color c =
+        ray ? finite_or_black(integrator.trace_camera_ray(*ray, context), context.counters) : Color{0, 0, 0};
     const double w = filter.weight(dx, dy);
     sum += w * c;
     plain += c;

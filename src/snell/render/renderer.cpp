@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "snell/math/pcg32.hpp"
+#include "snell/render/finite_sample.hpp"
 #include "snell/render/integrator.hpp"
 #include "snell/render/pixel_estimators.hpp"
 #include "snell/scene/blur_confidence.hpp"
@@ -143,7 +144,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
   auto trace_point = [&](double sx, double sy, TraceContext& ctx) {
     seed_camera_sample(ctx.rng, sx, sy, options_);
     const auto ray = camera->generate_ray(sx, sy, options_.time);
-    return ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
+    return ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx), ctx.counters) : Color{0, 0, 0};
   };
 
   // Focal blur (POV-Ray "Focal Blur"): rays from points spread over the lens and over the pixel, taken in
@@ -169,7 +170,8 @@ RenderStats Renderer::render_into(io::Image& image) const {
         const math::Vec2 lens = scene::lens_sample(n, shift_u, shift_v);
         const double time = sampling.shutter_time(sampling.pixel_seed(x, y), n, cam.blur_samples);
         const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, time);
-        const Color c = ray ? integrator->trace_camera_ray(*ray, ctx) : Color{0, 0, 0};
+        const Color c =
+            ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx), ctx.counters) : Color{0, 0, 0};
         sum += c;
         sum_sq += Color{c.r * c.r, c.g * c.g, c.b * c.b};
       }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -128,6 +129,10 @@ ResumeData read_resume_file(const fs::path& path, uint64_t fingerprint, int widt
       const auto bytes = static_cast<std::streamsize>(sizeof(float) * 3 * (t.rect.x1 - t.rect.x0));
       if (!in.read(reinterpret_cast<char*>(&data.image.rgb[data.image.index(t.rect.x0, y)]), bytes))
         throw ResumeError("resume file '" + path.string() + "' is truncated");
+      // The renderer never writes a NaN or infinite pixel (finite_sample.hpp): one here is damage.
+      const float* row = &data.image.rgb[data.image.index(t.rect.x0, y)];
+      if (!std::all_of(row, row + 3 * (t.rect.x1 - t.rect.x0), [](float v) { return std::isfinite(v); }))
+        throw ResumeError("resume file '" + path.string() + "' is corrupt (a pixel is not a number)");
       for (int x = t.rect.x0; x < t.rect.x1; ++x) data.image.set_alpha(x, y, 1.0f);
     }
     data.tiles.push_back(t);

@@ -11,6 +11,7 @@
 #include "snell/material/pigment.hpp"
 #include "snell/material/rgbft.hpp"
 #include "snell/math/transform.hpp"
+#include "snell/memory/budget.hpp"
 #include "snell/scene/camera.hpp"
 #include "snell/scene/fog.hpp"
 #include "snell/scene/light.hpp"
@@ -50,6 +51,9 @@ struct Scene {
   /// Checks to run after rendering, each returning a warning or an empty string (e.g. an isosurface whose
   /// rays met slopes steeper than its max_gradient).
   std::vector<std::function<std::string()>> render_notes;
+  /// What the scene's big arrays hold against --max-memory (memory/budget.hpp); later consumers (photon
+  /// maps, caches) charge it too.
+  std::shared_ptr<memory::Budget> memory_budget;
 
   /// The gamma the output is encoded relative to: POV-Ray 3.7 reads colours as linear under
   /// `assumed_gamma 1`, and without any assumed_gamma below #version 3.7 does no gamma handling.

@@ -41,6 +41,8 @@ std::shared_ptr<Array> Parser::parse_array() {
   if (array->sizes.empty()) fail(where, "expected '[size]' after array");
   const long long elements = element_count(array->sizes, options_.max_array_elements);
   if (elements > options_.max_array_elements) too_large(where);
+  array->charge =
+      charge_memory(where, static_cast<uint64_t>(elements) * sizeof(std::optional<Value>), "array");
   array->items.resize(static_cast<size_t>(elements));
   if (!peek_after_value().is_symbol("{")) return array;
 

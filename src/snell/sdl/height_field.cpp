@@ -71,6 +71,7 @@ ParsedObject Parser::parse_height_field(const Token& keyword) {
     const auto f = parse_function_block();
     if (f->arity() != 3) fail(source.where, "a height_field function takes x, y, z");
     grid.width = static_cast<int>(w), grid.depth = static_cast<int>(d);
+    keep_memory(source.where, static_cast<uint64_t>(w * d) * sizeof(float), "height_field function grid");
     grid.heights.resize(static_cast<std::size_t>(w * d));
     try {
       // POV-Ray samples f(x, y, 0) with x, y in [0, 1] and y = 0 on the image's top row, which is the far
@@ -101,6 +102,7 @@ ParsedObject Parser::parse_height_field(const Token& keyword) {
     } catch (const std::exception& e) {
       fail(name.where, e.what());
     }
+    keep_memory(name.where, grid.heights.size() * sizeof(float), "height_field image \"" + file + "\"");
   }
   bool smooth = false;
   double water = 0;

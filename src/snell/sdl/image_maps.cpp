@@ -80,6 +80,8 @@ std::shared_ptr<const material::Pigment> Parser::parse_image_map(double* bump_si
     } catch (const std::exception& e) {
       fail(file_token.where, "cannot read image \"" + file + "\": " + e.what());
     }
+    keep_memory(file_token.where, (image->rgb.size() + image->alpha.size()) * sizeof(float),
+                "image_map \"" + file + "\"");
     decode_gamma(*image, file_gamma, scene_.effective_assumed_gamma());
     spec.image = image;
     return std::make_shared<texture::ImageMapPigment>(spec);

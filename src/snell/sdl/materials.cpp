@@ -1,5 +1,8 @@
 // pigment, finish, interior, texture and transform blocks (POV-Ray 3.7 reference, "Textures",
 // "Interior", "Transformations"). Pigments and their patterns are parsed in pigments.cpp.
+#include <cmath>
+#include <string>
+
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
 
@@ -9,18 +12,26 @@ std::optional<math::Transform> Parser::parse_transform_item() {
   const Token t = peek();
   if (t.kind != Token::Kind::identifier) return std::nullopt;
   const std::string& w = t.text;
+  // An infinite or NaN amount (an overflow such as 1e200*1e200) would make every point it moves NaN.
+  const auto finite_vector = [&] {
+    const scene::SourceLocation where = peek().where;
+    const math::Vec3 v = parse_vector();
+    if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
+      fail(where, w + " amount is not a finite number");
+    return v;
+  };
   if (w == "translate") {
     raw_next();
-    return math::Transform::translate(parse_vector());
+    return math::Transform::translate(finite_vector());
   }
   if (w == "rotate") {
     raw_next();
-    return math::Transform::rotate_xyz_degrees(parse_vector());
+    return math::Transform::rotate_xyz_degrees(finite_vector());
   }
   if (w == "scale") {
     raw_next();
     const scene::SourceLocation where = peek().where;
-    math::Vec3 s = parse_vector();
+    math::Vec3 s = finite_vector();
     // POV-Ray 3.7 warns about a zero scale component and uses 1 instead.
     for (int i = 0; i < 3; ++i) {
       if (s[i] == 0) {
@@ -43,6 +54,17 @@ std::optional<math::Transform> Parser::parse_transform_item() {
     }
     in_vector_ = saved;
     expect(">", "matrix");
+    // POV-Ray 3.7 (Parse_Matrix) warns about a column of the 3x3 part that is all zero, a scale by 0,
+    // and puts 1 on its diagonal; a matrix still singular after that is an error here.
+    constexpr double kZero = 1e-10;
+    for (int column = 0; column < 3; ++column) {
+      if (std::fabs(values[column]) < kZero && std::fabs(values[3 + column]) < kZero &&
+          std::fabs(values[6 + column]) < kZero) {
+        warn(where, "matrix column " + std::to_string(column + 1) +
+                        " is zero (a scale by 0); using 1 on its diagonal");
+        values[4 * column] = 1;
+      }
+    }
     const auto m = math::Transform::pov_matrix(values);
     if (!m) fail(where, "singular matrix: it cannot be inverted");
     return *m;

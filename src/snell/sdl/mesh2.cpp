@@ -2,8 +2,11 @@
 // inside_vector }` (POV-Ray 3.7 reference, "Mesh2"): the same triangle data as `mesh`, written as indexed
 // lists. Each list starts with its count; commas between items are optional, as everywhere POV-Ray reads
 // them.
+#include <algorithm>
 #include <string>
+#include <string_view>
 
+#include "snell/sdl/degenerate_triangles.hpp"
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/shape_factory.hpp"
 
@@ -12,6 +15,18 @@ namespace snell::sdl {
 namespace {
 
 constexpr int kMaxMeshItems = 50'000'000;  // bounded memory for any claimed count
+/// A claimed count reserves at most this many items up front; the rest grows as items are read, so a
+/// count the list does not hold costs nothing (issue 12).
+constexpr int kMaxReserved = 1 << 16;
+
+/// Bytes each item of a list takes in MeshData, charged against --max-memory for the claimed count.
+uint64_t bytes_per_item(std::string_view list) {
+  if (list == "vertex_vectors" || list == "normal_vectors") return sizeof(math::Vec3);
+  if (list == "uv_vectors") return 2 * sizeof(double);
+  if (list == "face_indices") return sizeof(std::array<int, 3>) + sizeof(int);  // with a texture index
+  if (list == "normal_indices" || list == "uv_indices") return sizeof(std::array<int, 3>);
+  return 0;  // texture_list: textures are parsed (and counted) one by one
+}
 
 /// List items are read as arithmetic only, so `<1,-1> <-1,1>` without a comma is two vectors, not a
 /// comparison (objects/mesh2.pov writes them so).
@@ -26,6 +41,7 @@ int Parser::parse_mesh2_count(const char* list) {
   const scene::SourceLocation where = peek().where;
   const int count = parse_int(list, 0, kMaxMeshItems);
   if (count < 0) fail(where, std::string(list) + " count must not be negative");
+  keep_memory(where, static_cast<uint64_t>(count) * bytes_per_item(list), std::string("mesh2 ") + list);
   accept(",");
   return count;
 }
@@ -45,7 +61,7 @@ std::vector<std::array<int, 3>> Parser::parse_mesh2_indices(const char* list, si
                                                             std::vector<int>* textures) {
   const int count = parse_mesh2_count(list);
   std::vector<std::array<int, 3>> triples;
-  triples.reserve(static_cast<size_t>(count));
+  triples.reserve(static_cast<size_t>(std::min(count, kMaxReserved)));
   for (int i = 0; i < count; ++i) {
     if (i > 0) accept(",");
     if (peek().is_symbol("}")) break;
@@ -153,6 +169,7 @@ ParsedObject Parser::parse_mesh2(const Token& keyword) {
   if (data.uv_indices.empty() && !data.uvs.empty() && data.uvs.size() != data.vertices.size())
     data.uvs.clear();            // POV-Ray ignores uv_vectors it cannot pair with the vertices
   data.texture_indices.clear();  // per-face textures: see the warning above
+  if (const size_t n = count_degenerate_faces(data)) warn(keyword.where, degenerate_faces_message(n));
   return finish_shape(std::move(o), keyword, [&] { return shapes::mesh(std::move(data)); });
 }
 

@@ -3,6 +3,7 @@
 // Sources").
 #include <stdexcept>
 
+#include "snell/sdl/degenerate_triangles.hpp"
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/shape_factory.hpp"
 #include "snell/texture/pattern_pigment.hpp"
@@ -178,13 +179,18 @@ ParsedObject Parser::parse_shape(const Token& keyword) {
       comma();
       const math::Vec3 b = parse_vector();
       comma();
-      o.shape = shapes::triangle(a, b, parse_vector());
+      const math::Vec3 c = parse_vector();
+      if (is_degenerate_triangle(a, b, c))
+        warn(keyword.where, "degenerate triangle (its corners are on one line); it is not rendered");
+      o.shape = shapes::triangle(a, b, c);
     } else if (w == "smooth_triangle") {
       math::Vec3 p[6];
       for (int i = 0; i < 6; ++i) {
         p[i] = parse_vector();
         if (i < 5) comma();
       }
+      if (is_degenerate_triangle(p[0], p[2], p[4]))
+        warn(keyword.where, "degenerate triangle (its corners are on one line); it is not rendered");
       o.shape = shapes::smooth_triangle(p[0], p[1], p[2], p[3], p[4], p[5]);
     } else if (w == "quadric") {
       const math::Vec3 squares = parse_vector();
@@ -334,6 +340,10 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
         fail(m.where, "unexpected '" + m.text + "' in mesh triangle");
       }
       data.faces.push_back(face);
+      // --max-memory: charged by blocks of triangles (vertices, face and normal indices).
+      constexpr size_t kBlock = 4096;
+      if (data.faces.size() % kBlock == 1)
+        keep_memory(t.where, kBlock * (3 * sizeof(math::Vec3) + 2 * sizeof(face)), "mesh triangles");
       if (smooth) {
         if (data.normal_indices.size() < data.faces.size() - 1) {
           // An earlier flat triangle: give it its own face normal slots pointing nowhere (zero).
@@ -360,6 +370,7 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
     }
   }
   if (data.faces.empty()) fail(keyword.where, "mesh has no triangles");
+  if (const size_t n = count_degenerate_faces(data)) warn(keyword.where, degenerate_faces_message(n));
   return finish_shape(std::move(o), keyword, [&] { return shapes::mesh(std::move(data)); });
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "snell/memory/budget.hpp"
 #include "snell/scene/scene.hpp"
 
 namespace snell::sdl {
@@ -55,6 +56,8 @@ struct ParseOptions {
   /// Objects (shapes, lights and CSG nodes) in one object tree: `union { object { A } object { A } }`
   /// declared as A again doubles each time.
   long long max_objects = 20'000'000;
+  /// The memory the scene's big arrays may take (--max-memory); null: memory::default_limit().
+  std::shared_ptr<memory::Budget> memory_budget;
 };
 
 /// A scene error. `what()` is the whole message as printed: `file:line:col: error: message`, the source

@@ -167,6 +167,12 @@ class Parser {
   void warn(const scene::SourceLocation& where, const std::string& message) const;
   void message(const std::string& text) const;
   std::vector<ChainStep> chain() const;
+  /// Charges the scene's memory budget (memory_charges.cpp); past it, an error at `where`.
+  memory::Charge charge_memory(const scene::SourceLocation& where, uint64_t bytes, std::string_view consumer);
+  /// The same for memory kept as long as the scene (meshes, height fields, images): never given back.
+  void keep_memory(const scene::SourceLocation& where, uint64_t bytes, std::string_view consumer);
+  /// Runs `parse`, turning a BudgetExceeded from below (an array copied) into an error at the next token.
+  void locate_memory_errors(const std::function<void()>& parse);
 
   // ---- expressions (expressions.cpp) ----
   Numeric parse_numeric();

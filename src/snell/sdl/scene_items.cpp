@@ -15,7 +15,7 @@ Parser::Parser(const ParseOptions& options) : options_(options) {
 scene::Scene Parser::parse_file(const std::filesystem::path& path) {
   push_file(path, Frame::Kind::file,
             scene::SourceLocation{std::make_shared<const std::string>(path.string()), 0, 0});
-  parse_scene_items();
+  locate_memory_errors([this] { parse_scene_items(); });
   return finish_scene();
 }
 
@@ -24,7 +24,7 @@ scene::Scene Parser::parse_text(const std::string& text, const std::string& file
   f.tokens = tokens_of(file_name, text);
   f.folder = std::filesystem::path(file_name).parent_path();
   frames_.push_back(std::move(f));
-  parse_scene_items();
+  locate_memory_errors([this] { parse_scene_items(); });
   return finish_scene();
 }
 

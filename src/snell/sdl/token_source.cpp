@@ -269,7 +269,11 @@ void Parser::directive_declare(const Token& d, bool local) {
   Value value = parse_rvalue();
   // Arrays are values: `#declare B = A` copies, so later element assignments to one leave the other.
   if (auto* array = std::get_if<std::shared_ptr<Array>>(&value.data))
-    *array = std::make_shared<Array>(**array);
+    try {  // the copy is charged again against --max-memory (memory/budget.hpp)
+      *array = std::make_shared<Array>(**array);
+    } catch (const memory::BudgetExceeded& e) {
+      fail(eq.where, e.what());
+    }
   if (auto* object = std::get_if<ParsedObject>(&value.data); object && object->name.empty())
     object->name = name.text;
   // #local lands in the scope where the directive was written, even when the value came from a macro

@@ -74,6 +74,8 @@ struct Value {
 struct Array {
   std::vector<int> sizes;
   std::vector<std::optional<Value>> items;
+  /// The items' memory against --max-memory, released with the array.
+  memory::Charge charge;
 };
 
 }  // namespace snell::sdl
