@@ -45,6 +45,16 @@ const geometry::MeshData& mesh_data(const scene::Object& o) {
   return mesh ? mesh->data() : empty;
 }
 
+/// `mesh { "path" modifiers }` parsed, checked to be one mesh of `faces` triangles.
+scene::Scene parse_one_mesh(const std::string& path, size_t faces, const std::string& modifiers = "") {
+  scene::Scene s = sdl::test::parse("mesh { \"" + path + "\" " + modifiers + " }");
+  EXPECT_EQ(s.objects.size(), 1u);
+  if (!s.objects.empty()) {
+    EXPECT_EQ(mesh_data(*s.objects[0]).faces.size(), faces);
+  }
+  return s;
+}
+
 // A unit tetrahedron with corners at the origin and on the three axes: four faces.
 const char* const kTetrahedronPly = R"(ply
 format ascii 1.0
@@ -67,9 +77,8 @@ end_header
 
 TEST(SdlMeshImport, PlyTetrahedronHasFourFacesAndUnitBounds) {
   const std::string ply = write_file("tetra.ply", kTetrahedronPly);
-  const scene::Scene s = sdl::test::parse("mesh { \"" + ply + "\" translate <1,0,0> }");
+  const scene::Scene s = parse_one_mesh(ply, 4, "translate <1,0,0>");
   ASSERT_EQ(s.objects.size(), 1u);
-  EXPECT_EQ(mesh_data(*s.objects[0]).faces.size(), 4u);
   const math::Bounds3 b = s.objects[0]->world_bounds();
   EXPECT_NEAR(b.lo.x, 1, 1e-6);
   EXPECT_NEAR(b.hi.x, 2, 1e-6);
@@ -84,6 +93,43 @@ TEST(SdlMeshImport, PlyTetrahedronHasFourFacesAndUnitBounds) {
   EXPECT_NEAR(hit.t, 0.7 / std::sqrt(3.0), 1e-6);
   EXPECT_NEAR(std::fabs(hit.normal.x), 1 / std::sqrt(3.0), 1e-6);
   EXPECT_NEAR(std::fabs(hit.normal.z), 1 / std::sqrt(3.0), 1e-6);
+}
+
+TEST(SdlMeshImport, BinaryPlyIsReadDirectlyAndPolygonsBecomeFans) {
+  // Two vertices with double x and an extra ignored property, a quad (2 triangles) and a triangle.
+  std::string bytes =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty double x\nproperty float y\n"
+      "property float z\nproperty uchar quality\nelement face 2\nproperty list uchar uint vertex_indices\n"
+      "end_header\n";
+  auto put = [&](const auto v) { bytes.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  const float corners[5][3] = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 0, -3}};
+  for (const auto& c : corners) {
+    put(double(c[0]));
+    put(c[1]);
+    put(c[2]);
+    put(std::uint8_t{7});
+  }
+  put(std::uint8_t{4});
+  for (std::uint32_t i : {0u, 1u, 2u, 3u}) put(i);
+  put(std::uint8_t{3});
+  for (std::uint32_t i : {0u, 1u, 4u}) put(i);
+  const std::string ply = write_file("direct.ply", bytes);
+  const scene::Scene s = parse_one_mesh(ply, 3);
+  ASSERT_EQ(s.objects.size(), 1u);
+  const math::Bounds3 b = s.objects[0]->world_bounds();
+  EXPECT_NEAR(b.hi.x, 2, 1e-9);
+  EXPECT_NEAR(b.lo.z, -3, 1e-9);
+  math::Ray ray({1.5, 0.9, -1}, {0, 0, 1});  // inside the quad's second fan triangle (0, 2, 3)
+  scene::SurfaceHit hit;
+  ASSERT_TRUE(s.objects[0]->intersect(ray, 1e-9, 1e9, hit));
+  EXPECT_NEAR(hit.t, 1, 1e-9);
+
+  const std::string cut = write_file("cut.ply", bytes.substr(0, bytes.size() - 5));
+  EXPECT_NE(sdl::test::error_of("mesh { \"" + cut + "\" }").find("cut short"), std::string::npos);
+  std::string wrong_index = bytes;
+  wrong_index[wrong_index.size() - 4] = 9;  // the last index names vertex 9 of 5
+  const std::string bad = write_file("index.ply", wrong_index);
+  EXPECT_NE(sdl::test::error_of("mesh { \"" + bad + "\" }").find("names vertex 9 of 5"), std::string::npos);
 }
 
 TEST(SdlMeshImport, ObjMaterialsBecomeTextures) {
@@ -142,9 +188,8 @@ TEST(SdlMeshImport, BinaryStlTriangleKeepsItsPlane) {
   for (float v : {0.f, 0.f, 1.f, 0.f, 0.f, 0.5f, 1.f, 0.f, 0.5f, 0.f, 1.f, 0.5f}) put_f(v);
   bytes.append(2, '\0');
   const std::string stl = write_file("one.stl", bytes);
-  const scene::Scene s = sdl::test::parse("mesh { \"" + stl + "\" }");
+  const scene::Scene s = parse_one_mesh(stl, 1);
   ASSERT_EQ(s.objects.size(), 1u);
-  EXPECT_EQ(mesh_data(*s.objects[0]).faces.size(), 1u);
   math::Ray ray({0.2, 0.2, -1}, {0, 0, 1});
   scene::SurfaceHit hit;
   ASSERT_TRUE(s.objects[0]->intersect(ray, 1e-9, 1e9, hit));

@@ -3,6 +3,8 @@
 // material, so each remaining aiMesh becomes one ImportedPart with one material.
 #include "snell/io/mesh_import.hpp"
 
+#include "snell/io/ply_binary.hpp"
+
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -25,67 +27,33 @@ std::string lower_extension(const std::filesystem::path& path) {
   return ext;
 }
 
-/// Bytes of one binary PLY scalar type (PLY format, Greg Turk 1994: char/uchar/short/.../double and the
-/// sized aliases int8..float64).
 int ply_type_size(const std::string& type) {
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" ||
-      type == "float32")
-    return 4;
-  if (type == "double" || type == "float64") return 8;
-  throw MeshImportError("PLY header names an unknown property type '" + type + "'");
+  const int size = ply_scalar_size(type);
+  if (size == 0) throw MeshImportError("PLY header names an unknown property type '" + type + "'");
+  return size;
 }
 
 /// The least number of bytes the PLY body must have for the header's element counts: a list property costs
 /// at least its count field (binary) and every property at least two characters (ASCII, "0 ").
 void check_ply_header(std::istream& in, std::uintmax_t file_size) {
-  std::string line;
-  bool binary = false;
+  const std::optional<PlyHeader> header = read_ply_header(in);
+  if (!header) throw MeshImportError("the file does not start with 'ply'");
   double needed = 0;
-  double element_count = 0;
-  double element_bytes = 0;
-  auto close_element = [&] { needed += element_count * element_bytes; };
-  for (int lines = 0; std::getline(in, line); ++lines) {
-    if (lines > 10000) throw MeshImportError("PLY header does not end");
-    std::istringstream words(line);
-    std::string word;
-    words >> word;
-    if (word == "format") {
-      std::string format;
-      words >> format;
-      binary = format != "ascii";
-    } else if (word == "element") {
-      close_element();
-      std::string name;
-      words >> name >> element_count;
-      if (!words || element_count < 0) throw MeshImportError("PLY header has a bad element line: " + line);
-      if (element_count > std::numeric_limits<int>::max())
-        throw MeshImportError("PLY header claims " + std::to_string(static_cast<long long>(element_count)) +
-                              " " + name + " elements, more than 32-bit indices can address");
-      element_bytes = 0;
-    } else if (word == "property") {
-      std::string type;
-      words >> type;
-      if (!binary) {
-        element_bytes += 2;
-      } else if (type == "list") {
-        std::string count_type;
-        words >> count_type;
-        element_bytes += ply_type_size(count_type);
-      } else {
-        element_bytes += ply_type_size(type);
-      }
-    } else if (word == "end_header") {
-      close_element();
-      if (needed > static_cast<double>(file_size))
-        throw MeshImportError("PLY header claims elements needing at least " +
-                              std::to_string(static_cast<long long>(needed)) + " bytes, but the file has " +
-                              std::to_string(file_size));
-      return;
-    }
+  for (const PlyHeader::Element& element : header->elements) {
+    if (element.count > std::numeric_limits<int>::max())
+      throw MeshImportError("PLY header claims " + std::to_string(element.count) + " " + element.name +
+                            " elements, more than 32-bit indices can address");
+    double element_bytes = 0;
+    for (const PlyHeader::Property& property : element.properties)
+      element_bytes += header->format == "ascii"
+                           ? 2
+                           : ply_type_size(property.count_type.empty() ? property.type : property.count_type);
+    needed += static_cast<double>(element.count) * element_bytes;
   }
-  throw MeshImportError("PLY header has no end_header");
+  if (needed > static_cast<double>(file_size))
+    throw MeshImportError("PLY header claims elements needing at least " +
+                          std::to_string(static_cast<long long>(needed)) + " bytes, but the file has " +
+                          std::to_string(file_size));
 }
 
 /// Binary STL: 80-byte header, a 32-bit triangle count, then 50 bytes per triangle.
@@ -177,6 +145,14 @@ ImportedMesh import_mesh(const std::filesystem::path& path) {
   if (ec) throw MeshImportError("cannot read the file: " + ec.message());
   if (size == 0) throw MeshImportError("the file is empty");
   check_claimed_counts(path, size);
+  if (lower_extension(path) == ".ply") {
+    if (auto direct = read_binary_ply(path)) {  // big scanned or generated meshes: no Assimp copy
+      ImportedMesh out;
+      out.triangles = static_cast<std::int64_t>(direct->faces.size());
+      out.parts.push_back({std::move(*direct), ImportedMaterial{}});
+      return out;
+    }
+  }
 
   Assimp::Importer importer;
   // Points and lines are no surfaces: drop them rather than fail on a model that also has edges.
