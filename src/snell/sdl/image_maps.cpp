@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "snell/io/image_file.hpp"
+#include "snell/sdl/image_gamma.hpp"
 #include "snell/sdl/parser.hpp"
 #include "snell/texture/image_map.hpp"
 
@@ -19,15 +20,13 @@ bool is_bitmap_type(const std::string& w) {
   return false;
 }
 
-/// POV-Ray 3.7 decodes an image by its file gamma (sRGB, about 2.2, for the usual 8-bit files) into the
-/// scene's working gamma: stored^(2.2 / assumed_gamma).
+}  // namespace
+
 void decode_gamma(io::Image& image, double file_gamma, double assumed_gamma) {
   const double exponent = file_gamma / assumed_gamma;
   if (std::fabs(exponent - 1) < 1e-12) return;
   for (float& c : image.rgb) c = static_cast<float>(std::pow(std::max(0.0f, c), exponent));
 }
-
-}  // namespace
 
 std::shared_ptr<const material::Pigment> Parser::parse_image_map(double* bump_size) {
   expect("{", "image_map");

@@ -307,6 +307,7 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
   ParsedObject o;
   o.where = keyword.where;
   expect("{", "mesh");
+  if (peek().kind == Token::Kind::string) return parse_mesh_file(keyword);
   geometry::MeshData data;
   for (;;) {
     const Token t = peek();

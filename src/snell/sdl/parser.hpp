@@ -314,6 +314,8 @@ class Parser {
   ParsedObject parse_union(const Token& keyword);
   ParsedObject parse_blob(const Token& keyword);
   ParsedObject parse_mesh(const Token& keyword);
+  /// `mesh { "file" modifiers }` after `mesh {` (mesh_file.cpp; the model is read through Assimp).
+  ParsedObject parse_mesh_file(const Token& keyword);
   // ---- mesh2 (mesh2.cpp) ----
   ParsedObject parse_mesh2(const Token& keyword);
   int parse_mesh2_count(const char* list);
