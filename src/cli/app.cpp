@@ -92,6 +92,7 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
                      "supersampling depth: depth^2 extra rays (POV-Ray +R, default 3)");
   render->add_flag("--jitter", o.jitter, "jitter supersamples (POV-Ray +J)");
   render->add_option("--threads", o.threads, "render threads (default: all cores)");
+  render->add_option("--integrator", o.integrator, "whitted (POV-Ray's shading, default) or path");
   render->add_option("--accel", accel,
                      "ray accelerator: embree, bvh, octree, grid or none (default: embree when built)");
   render->add_option("--bits", o.bits, "PNG bit depth: 8 or 16");
@@ -181,6 +182,7 @@ int render(CliOptions& o) {
   ro.jitter = o.jitter;
   ro.jitter_amount = o.jitter_amount;
   ro.threads = o.threads;
+  ro.integrator = o.integrator;
   ro.region = {bounds.x0, bounds.y0, bounds.x1, bounds.y1};
   ro.cancel = &g_interrupted;
   Progress progress(!o.quiet);

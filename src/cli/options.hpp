@@ -26,6 +26,7 @@ struct CliOptions {
   bool jitter = false;
   double jitter_amount = 1.0;
   int threads = 0;
+  std::string integrator = "whitted";  // whitted (POV-Ray compatible) or path
   std::string accel = "auto";  // auto: embree when built, else brute force
   int bits = 8;
   /// Output format by extension, used when the output name has none (POV-Ray +FN/+FE/+FH).
