@@ -134,6 +134,7 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
       "--filter", o.filter,
       "pixel filter NAME[:RADIUS]: box (default, 0.5), tent (1), gaussian (1.5), mitchell (2)");
   render->add_option("--threads", o.threads, "render threads (default: all cores)");
+  render->add_option("--integrator", o.integrator, "whitted (POV-Ray's shading, default) or path");
   render->add_option("--accel", accel,
                      "ray accelerator: embree, bvh, octree, grid or none (default: embree when built)");
   render->add_option("--bits", o.bits, "PNG bit depth: 8 or 16");
@@ -235,6 +236,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   ro.sampler = o.sampler;
   ro.filter = o.filter;
   ro.threads = o.threads;
+  ro.integrator = o.integrator;
   ro.region = {bounds.x0, bounds.y0, bounds.x1, bounds.y1};
   ro.cancel = &g_interrupted;
   Progress progress(!o.quiet);

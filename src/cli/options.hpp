@@ -31,6 +31,7 @@ struct CliOptions {
   std::string sampler = "sobol";  // --sampler
   std::string filter = "box";     // --filter NAME[:RADIUS]
   int threads = 0;
+  std::string integrator = "whitted";  // whitted (POV-Ray compatible) or path
   std::string accel = "auto";  // auto: embree when built, else brute force
   int bits = 8;
   /// Output format by extension, used when the output name has none (POV-Ray +FN/+FE/+FH).

@@ -1,4 +1,7 @@
 #pragma once
+#include <optional>
+
+#include "snell/material/dipole.hpp"
 #include "snell/math/color.hpp"
 
 namespace snell::material {
@@ -33,6 +36,13 @@ struct Finish {
   bool conserve_energy = false;
   /// Whether `ambient` was given explicitly (3.7: then it overrides, else emission/ambient rules apply).
   bool ambient_set = false;
+
+  /// `subsurface { translucency <c> }` (POV-Ray 3.7 reference, "Subsurface Light Transport"): the diffuse
+  /// term becomes Jensen's dipole; translucency is the mean free path 1/sigma_s' in mm. `material "name"`
+  /// (a snell extension) takes sigma_s', sigma_a and eta from Jensen et al. 2001's measured table instead.
+  bool subsurface = false;
+  math::Color subsurface_translucency{1};
+  std::optional<Dipole> subsurface_material;
 
   bool reflects() const { return reflection_max.max() > 0 || reflection_min.max() > 0; }
 };

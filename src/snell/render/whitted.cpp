@@ -9,6 +9,7 @@
 #include "snell/render/light_ray.hpp"
 #include "snell/render/media.hpp"
 #include "snell/render/optics.hpp"
+#include "snell/render/subsurface.hpp"
 
 namespace snell::render {
 
@@ -248,6 +249,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   Color result = pc.rgb * (f.emission + f.ambient * scene_.settings.ambient_light) * sp.opacity;
   if (sp.observer) report_own_light(*sp.observer, pc.rgb * sp.opacity, f, scene_.settings.ambient_light);
   if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
+  if (f.subsurface) result += subsurface_light(sp, object, relative_ior, context);
 
   // Light through the surface (trace.cpp: filCol, trans).
   Color filter = transmitted_color(pc);
@@ -419,8 +421,9 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
   const Vec3& eye = sp.ray->direction;
   const double cos_l = dot(sp.normal, to_light);
   Color sum;
-  // Diffuse (trace.cpp, ComputeDiffuseColour): |cos|^brilliance, reduced by the surface's opacity.
-  if (f.diffuse > 0) {
+  // Diffuse (trace.cpp, ComputeDiffuseColour): |cos|^brilliance, reduced by the surface's opacity. A
+  // subsurface finish replaces it by the dipole (subsurface_light).
+  if (f.diffuse > 0 && !f.subsurface) {
     const double c = std::fabs(cos_l);
     const double intensity = (f.brilliance != 1 ? std::pow(c, f.brilliance) : c) * f.diffuse * sp.opacity;
     sum += intensity * pigment * lc;
@@ -452,6 +455,30 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
     }
   }
   return sum;
+}
+
+Color WhittedIntegrator::subsurface_light(const ShadingPoint& sp, const scene::Object* solid,
+                                          double relative_ior, TraceContext& context) const {
+  // Light entering around the point from the light sources (POV-Ray 3.7: ComputeSubsurfaceScattering's
+  // diffuse part; area lights count from their centre here).
+  SubsurfaceQuery query;
+  query.solid = solid;
+  query.point = sp.point;
+  query.normal = sp.raw_normal;
+  query.dipole = finish_dipole(*sp.finish, sp.pigment.rgb, std::max(relative_ior, 1.0 / relative_ior));
+  query.mm_per_unit = scene_.settings.mm_per_unit;
+  query.samples = scene_.settings.subsurface_samples;
+  const auto irradiance = [&](const Vec3& point, const Vec3& normal) {
+    Color e;
+    for (const scene::Light& light : scene_.lights) {
+      const LightRay lr = light_ray(light, point);
+      const double cos_l = dot(normal, lr.direction);
+      if (cos_l <= 0 || max_abs(lr.color) < kEpsilon) continue;
+      e += cos_l * (light.shadowless ? lr.color : shadowed(light, point, normal, lr, lr.color, context));
+    }
+    return e;
+  };
+  return subsurface_radiance(query, accel_, context.rng, irradiance) * sp.opacity;
 }
 
 Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, const Vec3& dir,

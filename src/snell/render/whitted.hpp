@@ -37,6 +37,9 @@ class WhittedIntegrator final : public Integrator {
   /// Diffuse, phong and specular light reflected towards the eye from light `lc` arriving along `to_light`.
   math::Color surface_response(const ShadingPoint& sp, const math::Vec3& to_light,
                                const math::Color& lc) const;
+  /// Diffuse light re-emitted by a `subsurface` finish (render/subsurface.hpp), replacing the diffuse term.
+  math::Color subsurface_light(const ShadingPoint& sp, const scene::Object* solid, double relative_ior,
+                               TraceContext& context) const;
   /// `seen` at `depth` along the ray as it reaches the ray's origin through media and fog.
   math::Color through_atmosphere(const math::Ray& ray, double depth, const InteriorStack& inside,
                                  math::Color seen, TraceContext& context) const;

@@ -221,7 +221,9 @@ material::Finish Parser::parse_finish_block(const material::Finish& base) {
       f.reflection_exponent = parse_float();
     } else if (w == "conserve_energy") {
       f.conserve_energy = parse_bool_optional(true);
-    } else if (w == "irid" || w == "subsurface") {
+    } else if (w == "subsurface") {
+      parse_finish_subsurface(f);
+    } else if (w == "irid") {
       warn(t.where, w + " is not supported yet; ignored");
       skip_block(w);
     } else {

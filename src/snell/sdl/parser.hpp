@@ -251,6 +251,10 @@ class Parser {
   std::shared_ptr<const material::Pigment> parse_pigment_block(
       const std::shared_ptr<const material::Pigment>& base);
   material::Finish parse_finish_block(const material::Finish& base);
+  /// `subsurface { translucency <c> | material "name" | samples N, M }` inside a finish (sdl/subsurface.cpp).
+  void parse_finish_subsurface(material::Finish& f);
+  /// `subsurface { samples N, M  radiosity bool }` in global_settings.
+  void parse_global_subsurface();
   std::shared_ptr<const material::Interior> parse_interior_block();
   std::shared_ptr<const material::Texture> parse_texture_block();
   /// The inside of a texture block up to `closer` ("}", or "]" for a texture_map entry).

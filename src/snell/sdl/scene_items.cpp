@@ -128,11 +128,11 @@ void Parser::parse_global_settings() {
         parse_color();
       else if (w != "hf_gray_16" || starts_numeric())
         parse_float();
-    } else if (w == "radiosity" || w == "photons" || w == "subsurface" || w == "mm_per_unit") {
-      if (w == "mm_per_unit") {
-        parse_float();
-        continue;
-      }
+    } else if (w == "mm_per_unit") {
+      scene_.settings.mm_per_unit = parse_float();
+    } else if (w == "subsurface") {
+      parse_global_subsurface();
+    } else if (w == "radiosity" || w == "photons") {
       warn(t.where, w + " is not supported yet; its block is ignored");
       skip_block(w);
     } else {

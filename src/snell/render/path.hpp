@@ -1,0 +1,30 @@
+#pragma once
+// `--integrator path`: a path tracer that renders POV-Ray scenes physically, as ground truth. Finishes map
+// to BSDFs (diffuse -> Lambert with albedo pigment * diffuse, phong/specular -> a normalised Phong lobe,
+// reflection -> mirror, filter/transmit with interior ior -> Fresnel dielectric); emission and
+// ambient-only surfaces emit. Light sources are sampled at every diffuse or glossy vertex (next-event
+// estimation; area lights at a random point of their rectangle), paths end by Russian roulette.
+// Light units follow POV-Ray: a white light at normal incidence on a white diffuse-1 surface gives 1.
+#include "snell/render/integrator.hpp"
+
+namespace snell::render {
+
+class PathIntegrator final : public Integrator {
+ public:
+  PathIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator);
+  math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context) const override;
+  std::string_view name() const override { return "path"; }
+
+ private:
+  /// Light from the scene's light sources reaching `point` (normal `n`) from direction `to_light`, times
+  /// the cosine, for each light sampled once.
+  math::Color sample_lights(const math::Vec3& point, const math::Vec3& n, const math::Vec3& wo,
+                            const math::Color& albedo, const math::Color& glossy, double exponent,
+                            TraceContext& context) const;
+  bool occluded(const math::Vec3& point, const math::Vec3& n, const math::Vec3& dir, double distance) const;
+
+  const scene::Scene& scene_;
+  const accel::Accelerator& accel_;
+};
+
+}  // namespace snell::render
