@@ -17,6 +17,8 @@ namespace snell::render {
 struct TraceContext {
   math::Pcg32 rng;
   RayCounters counters;
+  /// How many radiosity gathers the current ray is nested in (POV-Ray's radiosityRecursionDepth).
+  int radiosity_depth = 0;
 };
 
 class Integrator {

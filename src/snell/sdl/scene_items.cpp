@@ -128,7 +128,9 @@ void Parser::parse_global_settings() {
         parse_color();
       else if (w != "hf_gray_16" || starts_numeric())
         parse_float();
-    } else if (w == "radiosity" || w == "photons" || w == "subsurface" || w == "mm_per_unit") {
+    } else if (w == "radiosity") {
+      scene_.settings.radiosity = parse_radiosity_block();
+    } else if (w == "photons" || w == "subsurface" || w == "mm_per_unit") {
       if (w == "mm_per_unit") {
         parse_float();
         continue;
