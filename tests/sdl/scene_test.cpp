@@ -249,7 +249,9 @@ TEST(SdlScene, BackgroundGlobalSettingsAndVersion) {
   EXPECT_EQ(scene.settings.ambient_light, math::Color(1, 0.5, 0));
   EXPECT_EQ(scene.settings.language_version, 3.6);
   EXPECT_EQ(scene.background.rgb, math::Color(0.1, 0.2, 0.3));
-  EXPECT_EQ(messages.size(), 2u);  // radiosity skipped, second assumed_gamma ignored
+  ASSERT_TRUE(scene.settings.radiosity);  // read now, no longer skipped with a warning
+  EXPECT_EQ(scene.settings.radiosity->count, 100);
+  EXPECT_EQ(messages.size(), 1u);  // second assumed_gamma ignored
 }
 
 TEST(SdlScene, BlobExampleFromPovRay) {

@@ -23,6 +23,8 @@ struct TraceContext {
   /// Null in normal renders; set by `snell explain` and the AOV layers to watch the rays
   /// (trace_observer.hpp).
   TraceObserver* observer = nullptr;
+  /// How many radiosity gathers the current ray is nested in (POV-Ray's radiosityRecursionDepth).
+  int radiosity_depth = 0;
 };
 
 class Integrator {

@@ -92,6 +92,8 @@ struct WhittedIntegrator::ShadingPoint {
 
 WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)
     : scene_(scene), accel_(accelerator) {
+  if (scene.settings.radiosity)
+    radiosity_ = std::make_unique<radiosity::HemisphereGather>(*scene.settings.radiosity);
   for (const material::Media& m : scene.atmosphere) atmosphere_.push_back(&m);
   for (const auto& object : scene.objects)
     if (object->interior && !object->interior->media.empty()) has_interior_media_ = true;
@@ -246,8 +248,24 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   }
 
   // Emission and classic ambient, then the light sources.
-  Color result = pc.rgb * (f.emission + f.ambient * scene_.settings.ambient_light) * sp.opacity;
+  // With radiosity, 3.7 scenes drop `ambient` and gather the ambient light (trace.cpp,
+  // ComputeLightedTexture), skipped where it could not reach adc_bailout.
+  const bool classic_ambient = !radiosity_ || scene_.settings.language_version < 3.7;
+  const Color ambient = classic_ambient ? f.ambient * scene_.settings.ambient_light : Color(0);
+  Color result = pc.rgb * (f.emission + ambient) * sp.opacity;
   if (sp.observer) report_own_light(*sp.observer, pc.rgb * sp.opacity, f, scene_.settings.ambient_light);
+  const double most_indirect = pc.rgb.grey() * sp.opacity * f.diffuse;
+  if (radiosity_ && radiosity_->gathers_at(context.radiosity_depth) &&
+      most_indirect > scene_.settings.adc_bailout) {
+    const Vec3 around = radiosity_->settings().normal ? sp.normal : sp.raw_normal;
+    ++context.radiosity_depth;
+    const Color gathered = radiosity_->ambient(around, context.radiosity_depth - 1, [&](const Vec3& dir) {
+      const Ray sample{offset_origin(sp.point, around), dir, ray.time};
+      return trace(sample, RayKind::reflection, level + 1, weight * most_indirect, inside, context);
+    });
+    --context.radiosity_depth;
+    result += pc.rgb * gathered * (f.diffuse * sp.opacity);
+  }
   if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
   if (f.subsurface) result += subsurface_light(sp, object, relative_ior, context);
 

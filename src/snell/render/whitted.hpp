@@ -4,11 +4,13 @@
 // specular, metallic highlights, reflection (min/max, fresnel, falloff, exponent, metallic), refraction
 // with total internal reflection, filter/transmit and filtered shadows, termination by max_trace_level
 // and adc_bailout. Area lights with POV-Ray's adaptive grid; photons come later.
+#include <memory>
 #include <vector>
 
 #include "snell/render/integrator.hpp"
 #include "snell/render/interior_stack.hpp"
 #include "snell/render/light_ray.hpp"
+#include "snell/render/radiosity/hemisphere_gather.hpp"
 
 namespace snell::render {
 
@@ -69,6 +71,8 @@ class WhittedIntegrator final : public Integrator {
   /// Fog or media anywhere: camera rays then start inside the objects around the camera.
   bool has_atmosphere_ = false;
   InteriorStack camera_inside_;
+  /// Set when the scene has `radiosity {}`: it then replaces the ambient term.
+  std::unique_ptr<radiosity::HemisphereGather> radiosity_;
 };
 
 /// Origin for a ray leaving surface point `p` towards the side `side` points to: moved off the surface by

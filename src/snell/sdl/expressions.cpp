@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "snell/math/constants.hpp"
 #include "snell/sdl/parser.hpp"
@@ -103,6 +104,19 @@ math::Vec3 Parser::parse_vector() {
 
 material::Rgbft Parser::parse_color() {
   Numeric n = widen(parse_argument_numeric(), 5);
+  // POV-Ray's Parse_Colour keeps reading channel keywords after a bare colour (`pigment { White filter
+  // 0.95 }`, interior/crystal.pov): they change that colour rather than start a new one.
+  static const std::pair<const char*, size_t> channels[] = {
+      {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
+  for (bool more = true; more;) {
+    more = false;
+    for (const auto& [word, index] : channels)
+      if (peek().is_word(word)) {
+        raw_next();
+        n.v[index] = parse_float();
+        more = true;
+      }
+  }
   return {{n.v[0], n.v[1], n.v[2]}, n.v[3], n.v[4]};
 }
 

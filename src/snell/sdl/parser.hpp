@@ -368,6 +368,8 @@ class Parser {
   void parse_scene_items();
   scene::CameraSpec parse_camera(const scene::CameraSpec& base);
   void parse_global_settings();
+  /// `{ ... }` after global_settings' `radiosity` (radiosity_block.cpp).
+  scene::RadiositySettings parse_radiosity_block();
   void parse_background();
 
   // ---- fog, media, density (atmosphere.cpp) ----

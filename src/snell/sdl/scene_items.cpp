@@ -132,7 +132,9 @@ void Parser::parse_global_settings() {
       scene_.settings.mm_per_unit = parse_float();
     } else if (w == "subsurface") {
       parse_global_subsurface();
-    } else if (w == "radiosity" || w == "photons") {
+    } else if (w == "radiosity") {
+      scene_.settings.radiosity = parse_radiosity_block();
+    } else if (w == "photons") {
       warn(t.where, w + " is not supported yet; its block is ignored");
       skip_block(w);
     } else {

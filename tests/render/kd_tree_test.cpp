@@ -1,0 +1,59 @@
+// The photon kd-tree's k-nearest answers against a brute-force scan of the same points.
+#include "snell/render/photons/kd_tree.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "snell/math/pcg32.hpp"
+
+namespace snell::render::photons {
+namespace {
+
+std::vector<Neighbour> brute_force(const std::vector<math::Vec3>& points, const math::Vec3& c, size_t k,
+                                   double radius) {
+  std::vector<Neighbour> all;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const math::Vec3 d = points[i] - c;
+    if (dot(d, d) <= radius * radius) all.push_back({static_cast<uint32_t>(i), dot(d, d)});
+  }
+  std::sort(all.begin(), all.end(), [](const Neighbour& a, const Neighbour& b) {
+    return a.distance_squared != b.distance_squared ? a.distance_squared < b.distance_squared
+                                                    : a.index < b.index;
+  });
+  if (all.size() > k) all.resize(k);
+  return all;
+}
+
+TEST(KdTreeTest, NearestMatchesBruteForce) {
+  math::Pcg32 rng(7, 3);
+  std::vector<math::Vec3> points;
+  for (int i = 0; i < 3000; ++i)
+    points.push_back({rng.next_double(), rng.next_double(), 0.1 * rng.next_double()});
+  // Duplicates and points on a grid make ties that the index order must break the same way.
+  for (int i = 0; i < 200; ++i) points.push_back({0.1 * (i % 10), 0.1 * (i / 10 % 10), 0.0});
+  for (int i = 0; i < 50; ++i) points.push_back(points[static_cast<size_t>(i)]);
+  const KdTree tree(points);
+  ASSERT_EQ(tree.size(), points.size());
+  for (int q = 0; q < 300; ++q) {
+    const math::Vec3 c{rng.next_double(), rng.next_double(), 0.05};
+    const size_t k = 1 + static_cast<size_t>(q % 40);
+    const double radius = q % 3 == 0 ? 0.03 : 0.2;
+    const auto expected = brute_force(points, c, k, radius);
+    const auto got = tree.nearest(c, k, radius);
+    ASSERT_EQ(got.size(), expected.size()) << "query " << q;
+    for (size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].index, expected[i].index) << "query " << q << " rank " << i;
+      EXPECT_DOUBLE_EQ(got[i].distance_squared, expected[i].distance_squared);
+    }
+  }
+}
+
+TEST(KdTreeTest, EmptyTreeAndZeroKFindNothing) {
+  EXPECT_TRUE(KdTree({}).nearest({0, 0, 0}, 5, 1).empty());
+  EXPECT_TRUE(KdTree({{0, 0, 0}}).nearest({0, 0, 0}, 0, 1).empty());
+  EXPECT_EQ(KdTree({{0, 0, 0}}).nearest({0.5, 0, 0}, 3, 1).size(), 1u);
+}
+
+}  // namespace
+}  // namespace snell::render::photons
