@@ -48,6 +48,7 @@ std::shared_ptr<const material::Pigment> Parser::parse_image_map(double* bump_si
   const std::string file = parse_string();
   texture::ImageMapSpec spec;
   double file_gamma = 2.2;
+  bool use_color = false;
   for (;;) {
     const Token t = peek();
     if (t.is_symbol("}")) {
@@ -76,6 +77,7 @@ std::shared_ptr<const material::Pigment> Parser::parse_image_map(double* bump_si
     } else if (w == "bump_size" && bump_size) {
       *bump_size = parse_float();
     } else if (w == "use_color" || w == "use_colour" || w == "use_index" || w == "use_alpha") {
+      use_color = w != "use_index";
     } else {
       fail(t.where, "unexpected '" + w + "' in image_map");
     }
@@ -88,6 +90,14 @@ std::shared_ptr<const material::Pigment> Parser::parse_image_map(double* bump_si
     fail(file_token.where, "cannot read image \"" + file + "\": " + e.what());
   }
   decode_gamma(*image, file_gamma, scene_.effective_assumed_gamma());
+  // A bump_map of a palette image takes each pixel's palette index itself as its height unless told
+  // `use_color` (POV-Ray imageutil.cpp, bump_map: Amount * index).
+  if (bump_size && !use_color) {
+    if (const auto indexed = io::read_png_indices(path)) {
+      for (size_t i = 0; i < indexed->indices.size(); ++i)
+        for (size_t c = 0; c < 3; ++c) image->rgb[3 * i + c] = static_cast<float>(indexed->indices[i]);
+    }
+  }
   spec.image = image;
   return std::make_shared<texture::ImageMapPigment>(spec);
 }
