@@ -129,8 +129,8 @@ TEST(SdlAtmosphere, DensityMapEntriesMayBeDensities) {
 TEST(SdlAtmosphere, UnsupportedDensityPatternDropsTheMediaWithAWarning) {
   std::vector<std::string> messages;
   const auto s = test::parse(
-      "media { emission 1 density { density_file df3 \"none.df3\" interpolate 1 } }\n"
-      "sphere { 0, 1 hollow interior { media { emission 1 density { density_file df3 \"x\" } } } }",
+      "media { emission 1 density { pavement } }\n"
+      "sphere { 0, 1 hollow interior { media { emission 1 density { tiling 3 } } } }",
       &messages);
   EXPECT_TRUE(s.atmosphere.empty());
   ASSERT_EQ(s.objects.size(), 1u);

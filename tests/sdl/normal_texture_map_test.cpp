@@ -81,7 +81,7 @@ TEST(SdlPatterns, CrackleQuiltedSpiralMandelParseWithTheirModifiers) {
   EXPECT_NE(sdl::test::error_of("sphere { 0, 1 texture { gradient x } }").find("texture_map"),
             std::string::npos);
   EXPECT_NE(sdl::test::error_of("sphere { 0, 1 pigment { image_map { png \"no-such.png\" } } }")
-                .find("cannot find image"),
+                .find("cannot find file"),
             std::string::npos);
 }
 

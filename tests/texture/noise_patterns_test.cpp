@@ -8,7 +8,7 @@
 using namespace snell::texture;
 
 TEST(MarblePatternTest, WithoutTurbulenceIsTheXCoordinate) {
-  const MarblePattern marble(std::nullopt);
+  const MarblePattern marble(std::nullopt, NoiseChoice{});
   EXPECT_DOUBLE_EQ(marble.value({0.3, 7, -2}), 0.3);
 }
 
@@ -18,7 +18,7 @@ TEST(WoodPatternTest, WithoutTurbulenceIsDistanceFromZAxis) {
 }
 
 TEST(AgatePatternTest, StaysInUnitRange) {
-  const AgatePattern agate(TurbulenceParams{}, 1.0);
+  const AgatePattern agate(TurbulenceParams{}, 1.0, NoiseChoice{});
   for (int i = 0; i < 100; ++i) {
     const double v = agate.value({i * 0.13, -i * 0.07, i * 0.29});
     EXPECT_GE(v, 0.0);

@@ -18,6 +18,7 @@
 #include "snell/sdl/diagnostics.hpp"
 #include "snell/sdl/parse.hpp"
 #include "snell/sdl/value.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::geometry {
 struct HeightGrid;
@@ -291,8 +292,14 @@ class Parser {
   /// `{ [type] "file" modifiers }` after `image_map` (image_maps.cpp).
   /// In a `bump_map`, `bump_size` (when given) takes its `bump_size`.
   std::shared_ptr<const material::Pigment> parse_image_map(double* bump_size = nullptr);
+  /// An image file named in the scene: next to the scene, then in the library paths; else an error.
+  std::filesystem::path find_image_file(const Token& file_token, const std::string& file);
+  /// `material_map { ... }` after its keyword (sdl/material_map.cpp).
+  std::shared_ptr<const material::TextureSelector> parse_material_map();
   /// `<d>` or `{ <d> [, lo, hi] [altitude <a> [, lo, hi]] }` after `slope`.
   std::shared_ptr<const texture::ValuePattern> parse_slope();
+  /// `noise_generator N` after its keyword: 1, 2 or 3, else an error.
+  texture::NoiseGenerator parse_noise_generator();
   /// `{ [IDENT] [v colour] ... }` after `color_map`.
   std::shared_ptr<const texture::ColorMap> parse_color_map();
   /// `{ [IDENT] [v pigment-body] ... }` after `pigment_map`.
@@ -422,6 +429,9 @@ class Parser {
   double version_ = 3.7;
   bool in_vector_ = false;
   bool assumed_gamma_seen_ = false;
+  /// global_settings' noise_generator, shared with every pattern that names none (povray_noise.hpp).
+  std::shared_ptr<texture::NoiseGenerator> global_noise_generator_ =
+      std::make_shared<texture::NoiseGenerator>(texture::kDefaultNoiseGenerator);
   scene::Scene scene_;
   /// What `#default {}` has made of POV-Ray's default texture; objects parsed later start from it.
   std::shared_ptr<const material::Texture> default_texture_ = material::Texture::default_texture();

@@ -9,11 +9,13 @@
 #include "snell/sdl/parser.hpp"
 #include "snell/texture/average_pigment.hpp"
 #include "snell/texture/cellular_patterns.hpp"
+#include "snell/texture/density_file.hpp"
 #include "snell/texture/fractal_patterns.hpp"
 #include "snell/texture/noise_patterns.hpp"
 #include "snell/texture/pattern_pigment.hpp"
 #include "snell/texture/ripple_patterns.hpp"
 #include "snell/texture/spiral_patterns.hpp"
+#include "snell/texture/value_patterns.hpp"
 
 namespace snell::sdl {
 
@@ -42,6 +44,11 @@ struct Parser::PigmentBuilder {
   bool brick = false;
   math::Vec3 brick_size{8, 3, 4.5};
   double mortar = 0.5;
+  /// `density_file df3 "file" [interpolate n]` (density_file.hpp).
+  std::shared_ptr<const texture::DensityGrid> density_grid;
+  int density_interpolation = 0;
+  /// `noise_generator`: the pattern's own, or the parser's global_settings cell (povray_noise.hpp).
+  texture::NoiseChoice noise;
 
   /// Starts from an existing pigment: a patterned one can be modified further.
   void start_from(const PigmentPtr& pigment) {
@@ -97,12 +104,23 @@ struct Parser::PigmentBuilder {
   texture::PatternSpec build_spec() const {
     texture::PatternSpec out = spec;
     if (brick) out.block_pattern = std::make_shared<texture::BrickPattern>(brick_size, mortar);
-    if (special == "marble") out.value_pattern = std::make_shared<texture::MarblePattern>(turbulence);
+    if (special == "density_file")
+      out.value_pattern = std::make_shared<texture::DensityFilePattern>(density_grid, density_interpolation);
+    if (special == "bozo") out.value_pattern = std::make_shared<texture::BozoPattern>(noise);
+    if (special == "granite") out.value_pattern = std::make_shared<texture::GranitePattern>(noise);
+    if (special == "wrinkles") out.value_pattern = std::make_shared<texture::WrinklesPattern>(noise);
+    if (special == "bumps") out.value_pattern = std::make_shared<texture::BumpsPattern>(noise);
+    if (special == "dents") out.value_pattern = std::make_shared<texture::DentsPattern>(noise);
+    if (special == "marble") out.value_pattern = std::make_shared<texture::MarblePattern>(turbulence, noise);
     if (special == "wood") out.value_pattern = std::make_shared<texture::WoodPattern>(turbulence);
     if (special == "agate")
       out.value_pattern = std::make_shared<texture::AgatePattern>(
-          turbulence.value_or(texture::TurbulenceParams{}), agate_turb);
-    if (special == "crackle") out.value_pattern = std::make_shared<texture::CracklePattern>(crackle);
+          turbulence.value_or(texture::TurbulenceParams{}), agate_turb, noise);
+    if (special == "crackle") {
+      texture::CrackleParams params = crackle;
+      params.noise = noise;
+      out.value_pattern = std::make_shared<texture::CracklePattern>(params);
+    }
     if (special == "quilted")
       out.value_pattern = std::make_shared<texture::QuiltedPattern>(control0, control1);
     if (special == "mandel") out.value_pattern = std::make_shared<texture::MandelPattern>(fractal);
@@ -145,6 +163,8 @@ struct Parser::TexturePatternBuilder {
   PigmentBuilder pattern;
   std::vector<std::pair<double, std::shared_ptr<const material::Texture>>> map;
   std::vector<std::shared_ptr<const material::Texture>> blocks;
+  /// `material_map {}`: the whole selector, read at once.
+  std::shared_ptr<const material::TextureSelector> material_map;
 };
 
 }  // namespace snell::sdl

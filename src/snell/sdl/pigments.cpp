@@ -12,6 +12,7 @@
 #include "snell/texture/noise_patterns.hpp"
 #include "snell/texture/object_pattern.hpp"
 #include "snell/texture/pigment_pattern.hpp"
+#include "snell/texture/polygon_block_patterns.hpp"
 #include "snell/texture/ripple_patterns.hpp"
 #include "snell/texture/slope_pattern.hpp"
 #include "snell/texture/spiral_patterns.hpp"
@@ -33,8 +34,7 @@ PigmentPtr solid(const material::Rgbft& c) {
 
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
-  static const char* const patterns[] = {"density_file", "facets", "pavement", "square", "tiling",
-                                         "triangular",   "aoi",    "cubic",    "magnet", "potential"};
+  static const char* const patterns[] = {"facets", "pavement", "tiling", "aoi", "magnet", "potential"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -142,10 +142,6 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     value = std::make_shared<texture::RadialPattern>();
   } else if (w == "leopard") {
     value = std::make_shared<texture::LeopardPattern>();
-  } else if (w == "bozo" || w == "spotted") {
-    value = std::make_shared<texture::BozoPattern>();
-  } else if (w == "granite") {
-    value = std::make_shared<texture::GranitePattern>();
   } else if (w == "slope") {
     raw_next();
     value = parse_slope();
@@ -161,17 +157,12 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
   } else if (w == "pigment_pattern") {
     raw_next();
     value = std::make_shared<texture::PigmentPattern>(parse_pigment_block(nullptr));
-  } else if (w == "wrinkles") {
-    value = std::make_shared<texture::WrinklesPattern>();
-  } else if (w == "bumps") {
-    value = std::make_shared<texture::BumpsPattern>();
-  } else if (w == "dents") {
-    value = std::make_shared<texture::DentsPattern>();
   } else if (w == "marble" || w == "wood" || w == "agate" || w == "crackle" || w == "quilted" ||
              w == "ripples" || w == "waves" || w == "spiral1" || w == "spiral2" || w == "mandel" ||
-             w == "julia" || w == "average") {
+             w == "julia" || w == "average" || w == "bozo" || w == "spotted" || w == "granite" ||
+             w == "wrinkles" || w == "bumps" || w == "dents" || w == "density_file") {
     value = std::make_shared<texture::GranitePattern>();  // replaced in build_spec(), with its parameters
-    special = w;
+    special = w == "spotted" ? "bozo" : w;
   }
   if (value) {
     if (w != "gradient" && w != "image_pattern" && w != "slope" && w != "function" && w != "pigment_pattern")
@@ -179,7 +170,21 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     b.start_pattern();
     b.spec.value_pattern = std::move(value);
     b.special = special;
+    b.noise = texture::NoiseChoice(global_noise_generator_);
     if (w == "spiral1" || w == "spiral2") b.arms = parse_float();
+    if (w == "density_file") {
+      const Token type = peek();
+      if (!type.is_word("df3")) fail(type.where, "expected 'df3' after density_file");
+      raw_next();
+      const Token file_token = peek();
+      const std::string file = parse_string();
+      const std::filesystem::path path = find_image_file(file_token, file);
+      try {
+        b.density_grid = std::make_shared<const texture::DensityGrid>(texture::read_df3(path));
+      } catch (const std::runtime_error& e) {
+        fail(file_token.where, "cannot read density file \"" + file + "\": " + e.what());
+      }
+    }
     if (w == "julia") {
       const Numeric c = parse_numeric();
       b.julia_real = c.v[0];
@@ -226,6 +231,10 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
   } else if (w == "brick") {
     block = std::make_shared<texture::BrickPattern>();
     defaults = {rgb(0.5, 0.5, 0.5), rgb(0.6, 0.15, 0.15)};
+  } else if (auto polygon = texture::make_polygon_block_pattern(w)) {
+    block = polygon;
+    defaults = {rgb(1, 0, 0), rgb(0, 1, 0), rgb(0, 0, 1), rgb(1, 1, 0), rgb(0, 1, 1), rgb(1, 0, 1)};
+    defaults.resize(static_cast<size_t>(block->block_count()));
   } else if (w == "object") {
     // `object { Obj [A [, B]] }`: A outside the object, B inside.
     raw_next();
@@ -368,6 +377,9 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     raw_next();
     if (b.special != "quilted") fail(t.where, "'" + w + "' is only for the quilted pattern");
     (w == "control0" ? b.control0 : b.control1) = parse_float();
+  } else if (w == "interpolate" && b.special == "density_file") {
+    raw_next();
+    b.density_interpolation = static_cast<int>(parse_float());
   } else if (w == "agate_turb") {
     raw_next();
     b.agate_turb = parse_float();
@@ -379,11 +391,18 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     parse_color();
   } else if (w == "noise_generator") {
     raw_next();
-    parse_float();  // one noise for now (see texture/warp.hpp)
+    b.noise = texture::NoiseChoice(std::make_shared<const texture::NoiseGenerator>(parse_noise_generator()));
   } else {
     return false;
   }
   return true;
+}
+
+texture::NoiseGenerator Parser::parse_noise_generator() {
+  const scene::SourceLocation where = peek().where;
+  const double n = parse_float();
+  if (n != 1 && n != 2 && n != 3) fail(where, "noise_generator must be 1, 2 or 3");
+  return static_cast<texture::NoiseGenerator>(static_cast<int>(n));
 }
 
 std::shared_ptr<const texture::ValuePattern> Parser::parse_slope() {

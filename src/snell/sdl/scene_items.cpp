@@ -122,8 +122,10 @@ void Parser::parse_global_settings() {
       scene_.settings.ambient_light = parse_color().rgb;
     } else if (w == "charset") {
       raw_next();
-    } else if (w == "number_of_waves" || w == "noise_generator" || w == "max_intersections" ||
-               w == "irid_wavelength" || w == "hf_gray_16") {
+    } else if (w == "noise_generator") {
+      *global_noise_generator_ = parse_noise_generator();
+    } else if (w == "number_of_waves" || w == "max_intersections" || w == "irid_wavelength" ||
+               w == "hf_gray_16") {
       if (w == "irid_wavelength")
         parse_color();
       else if (w != "hf_gray_16" || starts_numeric())

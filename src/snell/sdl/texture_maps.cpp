@@ -6,6 +6,7 @@
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
 #include "snell/texture/object_pattern.hpp"
+#include "snell/texture/polygon_block_patterns.hpp"
 #include "snell/texture/texture_map.hpp"
 
 namespace snell::sdl {
@@ -13,7 +14,8 @@ namespace snell::sdl {
 bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
   const Token t = peek();
   const std::string& w = t.text;
-  if (w == "checker" || w == "hexagon" || w == "brick" || w == "object") {
+  if (w == "checker" || w == "hexagon" || w == "brick" || w == "object" ||
+      texture::make_polygon_block_pattern(w)) {
     raw_next();
     b = TexturePatternBuilder{};
     b.active = true;
@@ -26,6 +28,7 @@ bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
     if (w == "checker") b.pattern.spec.block_pattern = std::make_shared<texture::CheckerPattern>();
     if (w == "hexagon") b.pattern.spec.block_pattern = std::make_shared<texture::HexagonPattern>();
     if (w == "brick") b.pattern.spec.block_pattern = std::make_shared<texture::BrickPattern>();
+    if (auto polygon = texture::make_polygon_block_pattern(w)) b.pattern.spec.block_pattern = polygon;
     const int count = b.pattern.spec.block_pattern->block_count();
     for (int i = 0; i < count; ++i) {
       if (i > 0) accept(",");
@@ -61,6 +64,13 @@ bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
       b.blocks.push_back(layers);
     }
     expect("}", "tiles");
+    return true;
+  }
+  if (w == "material_map") {
+    raw_next();
+    b = TexturePatternBuilder{};
+    b.active = true;
+    b.material_map = parse_material_map();
     return true;
   }
   if (w == "texture_map") {
@@ -100,6 +110,10 @@ bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
 
 void Parser::finish_texture_pattern(const TexturePatternBuilder& b, material::Texture& texture,
                                     const scene::SourceLocation& where) {
+  if (b.material_map) {
+    texture.selector = b.material_map;
+    return;
+  }
   texture::PatternSpec spec = b.pattern.build_spec();
   if (spec.value_pattern && b.map.empty()) fail(where, "a patterned texture needs a texture_map");
   try {

@@ -65,7 +65,7 @@ double CracklePattern::value(const Vec3& p) const {
   }
   if (params_.solid) {
     // One smooth-noise value per cell, taken at the cell's point (as POV-Ray does).
-    return povray_noise(nearest_point);
+    return povray_noise(nearest_point, params_.noise.get());
   }
   const double offset_term = params_.offset == 0 ? 0 : minkowski(Vec3{params_.offset, 0, 0}, metric);
   double sum = 0;

@@ -4,6 +4,7 @@
 // generator, so the cells have the same size and character as POV-Ray's but sit elsewhere.
 #include "snell/math/vec3.hpp"
 #include "snell/texture/pattern.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::texture {
 
@@ -24,6 +25,8 @@ struct CrackleParams {
   double offset = 0;
   /// Each cell one flat value instead of the distance blend.
   bool solid = false;
+  /// The generator of the solid cells' noise.
+  NoiseChoice noise;
 };
 
 class CracklePattern final : public ValuePattern {

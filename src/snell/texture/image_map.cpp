@@ -10,13 +10,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// Image coordinates of a point: u to the right, v up, the image covering [0,1) in each.
-struct Uv {
-  double u;
-  double v;
-};
+}  // namespace
 
-Uv map_point(ImageMapType type, const math::Vec3& p) {
+ImageUv image_map_uv(ImageMapType type, const math::Vec3& p) {
   switch (type) {
     case ImageMapType::planar:
       return {p.x, p.y};
@@ -33,8 +29,6 @@ Uv map_point(ImageMapType type, const math::Vec3& p) {
   }
   return {p.x, p.y};
 }
-
-}  // namespace
 
 ImageMapPigment::ImageMapPigment(ImageMapSpec spec) : spec_(std::move(spec)) {
   if (!spec_.image || spec_.image->width <= 0 || spec_.image->height <= 0)
@@ -61,7 +55,7 @@ math::Color ImageMapPigment::texel(double u, double v) const {
 }
 
 material::Rgbft ImageMapPigment::at(const material::PatternPoint& point) const {
-  const Uv uv = map_point(spec_.type, point.p);
+  const ImageUv uv = image_map_uv(spec_.type, point.p);
   if (spec_.once && (uv.u < 0 || uv.u >= 1 || uv.v < 0 || uv.v >= 1)) return {math::Color(0), 0, 1};
   const double u = uv.u - std::floor(uv.u), v = uv.v - std::floor(uv.v);
   return {texel(u, v), spec_.filter_all, spec_.transmit_all};

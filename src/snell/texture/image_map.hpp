@@ -11,6 +11,14 @@ namespace snell::texture {
 
 enum class ImageMapType { planar = 0, spherical = 1, cylindrical = 2 };
 
+/// Image coordinates of a point: u to the right, v up, the image covering [0,1) in each (repeating
+/// outside for the planar and cylindrical maps).
+struct ImageUv {
+  double u;
+  double v;
+};
+ImageUv image_map_uv(ImageMapType type, const math::Vec3& p);
+
 struct ImageMapSpec {
   /// Linear RGB (the parser decodes the file's gamma).
   std::shared_ptr<const io::Image> image;

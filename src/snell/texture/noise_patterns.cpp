@@ -18,7 +18,7 @@ double cycloidal(double v) {
 double MarblePattern::value(const Vec3& p) const {
   if (!turbulence_) return p.x;
   const TurbulenceParams& t = *turbulence_;
-  return p.x + t.amount.x * povray_turbulence(p, t.octaves, t.lambda, t.omega);
+  return p.x + t.amount.x * povray_turbulence(p, t.octaves, t.lambda, t.omega, noise_.get());
 }
 
 double WoodPattern::value(const Vec3& p) const {
@@ -34,24 +34,34 @@ double WoodPattern::value(const Vec3& p) const {
 
 double AgatePattern::value(const Vec3& p) const {
   const TurbulenceParams& t = turbulence_;
-  const double turb = agate_turb_ * povray_turbulence(p, t.octaves, t.lambda, t.omega);
+  const double turb = agate_turb_ * povray_turbulence(p, t.octaves, t.lambda, t.omega, noise_.get());
   const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
   return std::pow(std::clamp(v, 0.0, 1.0), 0.77);
 }
 
 double GranitePattern::value(const Vec3& p) const {
-  // POV-Ray's granite: six octaves of |1 - 2 noise| capped at 0.5 (generators 2 and 3).
+  // POV-Ray's granite (pattern.cpp): six octaves; generator 1 takes |0.5 - noise|, generators 2 and 3
+  // |1 - 2 noise| capped at 0.5.
+  const NoiseGenerator generator = noise_.get();
   double sum = 0, frequency = 1;
-  for (int i = 0; i < 6; ++i, frequency *= 2)
-    sum += std::min(std::fabs(1.0 - 2.0 * povray_noise(p * (4.0 * frequency))), 0.5) / frequency;
+  for (int i = 0; i < 6; ++i, frequency *= 2) {
+    const double n = povray_noise(p * (4.0 * frequency), generator);
+    const double octave =
+        generator == NoiseGenerator::original ? std::fabs(0.5 - n) : std::min(std::fabs(1.0 - 2.0 * n), 0.5);
+    sum += octave / frequency;
+  }
   return sum;
 }
 
 double WrinklesPattern::value(const Vec3& p) const {
-  // POV-Ray's wrinkles: ten octaves of 2 noise - 0.5 clamped to [0, 1] (generators 2 and 3).
+  // POV-Ray's wrinkles (pattern.cpp): ten octaves of the noise as it is (generator 1) or of 2 noise - 0.5
+  // clamped to [0, 1] (generators 2 and 3).
+  const NoiseGenerator generator = noise_.get();
   double sum = 0, amplitude = 1, frequency = 1;
-  for (int i = 0; i < 10; ++i, amplitude *= 0.5, frequency *= 2)
-    sum += amplitude * std::clamp(2.0 * povray_noise(p * frequency) - 0.5, 0.0, 1.0);
+  for (int i = 0; i < 10; ++i, amplitude *= 0.5, frequency *= 2) {
+    const double n = povray_noise(p * frequency, generator);
+    sum += amplitude * (generator == NoiseGenerator::original ? n : std::clamp(2.0 * n - 0.5, 0.0, 1.0));
+  }
   return sum / 2;
 }
 
@@ -63,7 +73,7 @@ Vec3 WrinklesPattern::bump(const Vec3& p) const {
 }
 
 double BumpsPattern::value(const Vec3& p) const {
-  return povray_noise(p);
+  return povray_noise(p, noise_.get());
 }
 
 Vec3 BumpsPattern::bump(const Vec3& p) const {
@@ -71,7 +81,7 @@ Vec3 BumpsPattern::bump(const Vec3& p) const {
 }
 
 double DentsPattern::value(const Vec3& p) const {
-  const double n = povray_noise(p);
+  const double n = povray_noise(p, noise_.get());
   return n * n * n;
 }
 

@@ -6,6 +6,8 @@
 //     cubic S-curve, shifted by 0.5 and clamped to [0, 1];
 //   2 "range corrected" (3.7's default): the same sum stretched to fill [0, 1];
 //   3 "Perlin": Perlin's 1985 gradient noise, scaled to about [0, 1].
+#include <memory>
+
 #include "snell/math/vec3.hpp"
 
 namespace snell::texture {
@@ -14,6 +16,19 @@ enum class NoiseGenerator { original = 1, range_corrected = 2, perlin = 3 };
 
 /// POV-Ray's generator when a scene names none (3.7: range corrected).
 constexpr NoiseGenerator kDefaultNoiseGenerator = NoiseGenerator::range_corrected;
+
+/// The generator a pattern uses: its own `noise_generator N`, or a cell shared with the parser that holds
+/// the scene's `global_settings { noise_generator N }`, which may come after the pattern (POV-Ray too
+/// resolves a pattern's default generator from the scene only when rendering). Empty: 3.7's default.
+class NoiseChoice {
+ public:
+  NoiseChoice() = default;
+  explicit NoiseChoice(std::shared_ptr<const NoiseGenerator> cell) : cell_(std::move(cell)) {}
+  NoiseGenerator get() const { return cell_ ? *cell_ : kDefaultNoiseGenerator; }
+
+ private:
+  std::shared_ptr<const NoiseGenerator> cell_;
+};
 
 /// POV-Ray's Noise(): a scalar in [0, 1].
 double povray_noise(const math::Vec3& p, NoiseGenerator generator = kDefaultNoiseGenerator);

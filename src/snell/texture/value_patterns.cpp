@@ -57,7 +57,7 @@ double LeopardPattern::value(const Vec3& p) const {
 }
 
 double BozoPattern::value(const Vec3& p) const {
-  return povray_noise(p);
+  return povray_noise(p, noise_.get());
 }
 
 }  // namespace snell::texture

@@ -2,6 +2,7 @@
 // POV-Ray's geometric value patterns (POV-Ray 3.7 reference, "Patterns"; definitions as in POV-Ray's
 // pattern.cpp). Values are raw: the wave shaping (texture/wave.hpp) folds them into [0,1].
 #include "snell/texture/pattern.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::texture {
 
@@ -58,11 +59,14 @@ class LeopardPattern final : public ValuePattern {
   double value(const Vec3& p) const override;
 };
 
-/// `bozo` / `spotted`: smooth noise in [0,1]. POV-Ray uses its own lattice noise; this is improved
-/// Perlin noise rescaled to [0,1], alike in feature size but not point for point.
+/// `bozo` / `spotted`: smooth noise in [0,1], POV-Ray's Noise() from the pattern's `noise_generator`.
 class BozoPattern final : public ValuePattern {
  public:
+  explicit BozoPattern(NoiseChoice noise = {}) : noise_(std::move(noise)) {}
   double value(const Vec3& p) const override;
+
+ private:
+  NoiseChoice noise_;
 };
 
 }  // namespace snell::texture
