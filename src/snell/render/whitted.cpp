@@ -88,14 +88,14 @@ WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Acc
   if (has_atmosphere_) camera_inside_ = containing(scene.camera.location);
 }
 
-Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context) const {
+Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context, double max_distance) const {
   ++context.counters.camera;
-  if (!has_atmosphere_) return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context);
+  if (!has_atmosphere_) return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context, max_distance);
   // POV-Ray starts camera rays inside every object that contains the camera (tracepixel.cpp,
   // InitRayContainerState): fog and media then skip cameras inside solids that are not hollow, and media
   // of a hollow object around the camera show. Done only in scenes with fog or media, where it matters.
   const InteriorStack inside = ray.origin == scene_.camera.location ? camera_inside_ : containing(ray.origin);
-  return trace(ray, RayKind::camera, 1, 1.0, inside, context);
+  return trace(ray, RayKind::camera, 1, 1.0, inside, context, max_distance);
 }
 
 bool WhittedIntegrator::crosses_projection(const scene::Light& light, const Vec3& point,
@@ -116,14 +116,15 @@ InteriorStack WhittedIntegrator::containing(const Vec3& point) const {
 }
 
 Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double weight,
-                               const InteriorStack& inside, TraceContext& context) const {
+                               const InteriorStack& inside, TraceContext& context,
+                               double max_distance) const {
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return Color(0);
   scene::SurfaceHit hit;
-  const bool found = accel_.intersect(ray, 0.0, math::kInfinity, kind, hit);
+  const bool found = accel_.intersect(ray, 0.0, max_distance, kind, hit);
   const Color seen =
       found ? shade(ray, hit, level, weight, inside, context) : scene_.miss_color(ray.direction);
   if (!has_atmosphere_) return seen;
-  return through_atmosphere(ray, found ? hit.t : kSkyDepth, inside, seen, context);
+  return through_atmosphere(ray, found ? hit.t : std::min(kSkyDepth, max_distance), inside, seen, context);
 }
 
 Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const InteriorStack& inside,

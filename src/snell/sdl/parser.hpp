@@ -332,6 +332,8 @@ class Parser {
   // ---- scene items (scene_items.cpp) ----
   void parse_scene_items();
   scene::CameraSpec parse_camera(const scene::CameraSpec& base);
+  /// `{ ... }` after `mesh_camera` (mesh_camera_block.cpp).
+  void parse_mesh_camera(scene::CameraSpec& cam, const Token& keyword);
   void parse_global_settings();
   void parse_background();
 
