@@ -50,7 +50,6 @@ MeshCameraRays::MeshCameraRays(const MeshCameraSpec& spec, double offset, bool r
         for (size_t k = 0; k < 3; ++k) f.uv[k] = d.uvs[static_cast<size_t>(d.uv_indices[i][k])];
       list.faces.push_back(f);
     }
-    total_faces_ += list.faces.size();
     meshes_.push_back(std::move(list));
   }
   if (spec_.distribution == 3 && !meshes_.empty()) {
@@ -82,8 +81,10 @@ std::optional<math::Ray> MeshCameraRays::ray(double sx, double sy, int ray_numbe
       return from_face(meshes_[static_cast<size_t>(ray_number)], row * width + column, time);
     }
     case 1: {
-      // All meshes' faces in one list; ray n of a pixel takes the face n lists further on.
-      size_t face = row * width + column + static_cast<size_t>(ray_number) * total_faces_;
+      // All meshes' faces in one list; ray n of pixel p takes face p + n * width * height, as the reference
+      // documents it (POV-Ray 3.7's code adds n * total faces instead, so no ray after the first is traced).
+      const size_t pixels = width * static_cast<size_t>(height_);
+      size_t face = row * width + column + static_cast<size_t>(ray_number) * pixels;
       for (const FaceList& mesh : meshes_) {
         if (face < mesh.faces.size()) return from_face(mesh, face, time);
         face -= mesh.faces.size();

@@ -23,7 +23,7 @@ struct MeshCameraMesh {
 struct MeshCameraSpec {
   int rays_per_pixel = 1;
   /// 0: ray n of pixel p uses face p of mesh n; 1: all meshes' faces in one list, ray n of pixel p uses face
-  /// n * (total faces) + p; 2: the image is split into one column block per mesh, side by side; 3: the
+  /// p + n * width * height; 2: the image is split into one column block per mesh, side by side; 3: the
   /// pixel's (u, v) picks the face of the first mesh whose uv triangle contains it.
   int distribution = 0;
   /// Camera rays find nothing farther than this; 0 for no limit.
@@ -67,7 +67,6 @@ class MeshCameraRays {
   bool reverse_;
   int width_, height_;
   std::vector<FaceList> meshes_;
-  size_t total_faces_ = 0;
   /// Distribution 3: for each cell of a kUvGrid x kUvGrid grid over uv [0,1]^2, the faces of the first mesh
   /// whose uv bounding box touches it, in face order.
   static constexpr int kUvGrid = 32;
