@@ -6,6 +6,7 @@
 
 #include "snell/accel/accelerator.hpp"
 #include "snell/math/color.hpp"
+#include "snell/math/constants.hpp"
 #include "snell/math/pcg32.hpp"
 #include "snell/math/ray.hpp"
 #include "snell/render/ray_counters.hpp"
@@ -30,8 +31,10 @@ struct TraceContext {
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  /// Radiance arriving along a camera ray (unit direction).
-  virtual math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context) const = 0;
+  /// Radiance arriving along a camera ray (unit direction) from surfaces nearer than `max_distance` (a
+  /// mesh camera's limit; POV-Ray's TraceRay maxDepth).
+  virtual math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context,
+                                       double max_distance = math::kInfinity) const = 0;
   virtual std::string_view name() const = 0;
 };
 

@@ -80,14 +80,17 @@ Color PathIntegrator::sample_lights(const Vec3& point, const Vec3& n, const Vec3
   return sum;
 }
 
-Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext& context) const {
+Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext& context,
+                                       double max_distance) const {
   Color radiance;
   Color throughput(1);
   math::Ray ray = camera_ray;
   InteriorStack inside;
   for (int bounce = 0; bounce < kMaxBounces; ++bounce) {
     scene::SurfaceHit hit;
-    if (!accel_.intersect(ray, 0.0, math::kInfinity, scene::RayKind::camera, hit)) {
+    // A mesh camera's max_distance limits the camera ray only.
+    if (!accel_.intersect(ray, 0.0, bounce == 0 ? max_distance : math::kInfinity, scene::RayKind::camera,
+                          hit)) {
       radiance += throughput * scene_.miss_color(ray.direction);
       break;
     }

@@ -12,7 +12,8 @@ namespace snell::render {
 class PathIntegrator final : public Integrator {
  public:
   PathIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator);
-  math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context) const override;
+  math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context,
+                               double max_distance = math::kInfinity) const override;
   std::string_view name() const override { return "path"; }
 
  private:

@@ -103,9 +103,32 @@ RenderResult Renderer::render() const {
   return result;
 }
 
+namespace {
+
+/// The colour one image point sees: its camera ray, or the mean of a mesh camera's rays there.
+Color trace_camera_point(const scene::Camera& camera, const Integrator& integrator, double sx, double sy,
+                         double time, TraceContext& ctx) {
+  const int rays = camera.rays_per_point();
+  if (rays == 1) {
+    const auto ray = camera.generate_ray(sx, sy, time);
+    return ray ? integrator.trace_camera_ray(*ray, ctx, camera.max_distance()) : Color{0, 0, 0};
+  }
+  // A mesh camera's rays_per_pixel: the mean of the rays it traces (POV-Ray's TracePixel skips the others).
+  Color sum{0, 0, 0};
+  int traced = 0;
+  for (int n = 0; n < rays; ++n)
+    if (const auto ray = camera.generate_numbered_ray(sx, sy, n, time)) {
+      sum += integrator.trace_camera_ray(*ray, ctx, camera.max_distance());
+      ++traced;
+    }
+  return traced > 0 ? sum / static_cast<double>(traced) : Color{0, 0, 0};
+}
+
+}  // namespace
+
 RenderStats Renderer::render_into(io::Image& image) const {
   const auto integrator = make_integrator(options_.integrator, scene_, accel_);
-  const auto camera = scene::make_camera(scene_.camera);
+  const auto camera = scene::make_camera(scene_.camera, options_.width, options_.height);
   const int w = options_.width, h = options_.height;
   if (image.width != w || image.height != h || !image.has_alpha())
     throw std::invalid_argument("render target does not match the image size");
@@ -143,8 +166,8 @@ RenderStats Renderer::render_into(io::Image& image) const {
   // falls in the image, so the image is the same for any thread count and tile order.
   auto trace_point = [&](double sx, double sy, TraceContext& ctx) {
     seed_camera_sample(ctx.rng, sx, sy, options_);
-    const auto ray = camera->generate_ray(sx, sy, options_.time);
-    return ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx), ctx.counters) : Color{0, 0, 0};
+    return finite_or_black(trace_camera_point(*camera, *integrator, sx, sy, options_.time, ctx),
+                           ctx.counters);
   };
 
   // Focal blur (POV-Ray "Focal Blur"): rays from points spread over the lens and over the pixel, taken in
@@ -170,8 +193,9 @@ RenderStats Renderer::render_into(io::Image& image) const {
         const math::Vec2 lens = scene::lens_sample(n, shift_u, shift_v);
         const double time = sampling.shutter_time(sampling.pixel_seed(x, y), n, cam.blur_samples);
         const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, time);
-        const Color c =
-            ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx), ctx.counters) : Color{0, 0, 0};
+        const Color c = ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx, camera->max_distance()),
+                                              ctx.counters)
+                            : Color{0, 0, 0};
         sum += c;
         sum_sq += Color{c.r * c.r, c.g * c.g, c.b * c.b};
       }

@@ -101,15 +101,15 @@ WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Acc
   if (has_atmosphere_) camera_inside_ = containing(scene.camera.location);
 }
 
-Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context) const {
+Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context, double max_distance) const {
   ++context.counters.camera;
   context.time = ray.time;
-  if (!has_atmosphere_) return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context);
+  if (!has_atmosphere_) return trace(ray, RayKind::camera, 1, 1.0, InteriorStack{}, context, max_distance);
   // POV-Ray starts camera rays inside every object that contains the camera (tracepixel.cpp,
   // InitRayContainerState): fog and media then skip cameras inside solids that are not hollow, and media
   // of a hollow object around the camera show. Done only in scenes with fog or media, where it matters.
   const InteriorStack inside = ray.origin == scene_.camera.location ? camera_inside_ : containing(ray.origin);
-  return trace(ray, RayKind::camera, 1, 1.0, inside, context);
+  return trace(ray, RayKind::camera, 1, 1.0, inside, context, max_distance);
 }
 
 bool WhittedIntegrator::crosses_projection(const scene::Light& light, const Vec3& point,
@@ -130,16 +130,18 @@ InteriorStack WhittedIntegrator::containing(const Vec3& point) const {
 }
 
 Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double weight,
-                               const InteriorStack& inside, TraceContext& context) const {
+                               const InteriorStack& inside, TraceContext& context,
+                               double max_distance) const {
   ObservedRay observed(context.observer, kind, ray, level, weight);
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return Color(0);
   scene::SurfaceHit hit;
-  const bool found = accel_.intersect(ray, 0.0, math::kInfinity, kind, hit);
+  const bool found = accel_.intersect(ray, 0.0, max_distance, kind, hit);
   observed.hit(found ? &hit : nullptr);
   const Color seen =
       found ? shade(ray, hit, level, weight, inside, context) : scene_.miss_color(ray.direction);
   if (!has_atmosphere_) return observed.result(seen);
-  return observed.result(through_atmosphere(ray, found ? hit.t : kSkyDepth, inside, seen, context));
+  return observed.result(
+      through_atmosphere(ray, found ? hit.t : std::min(kSkyDepth, max_distance), inside, seen, context));
 }
 
 Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const InteriorStack& inside,
@@ -169,7 +171,8 @@ Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const 
 
 Color WhittedIntegrator::shadowed(const scene::Light& light, const Vec3& point, const Vec3& normal,
                                   const LightRay& toward, const Color& colour, TraceContext& context) const {
-  ObservedRay observed(context.observer, RayKind::shadow, {point, toward.direction, context.time}, 0, 1.0, &light);
+  ObservedRay observed(context.observer, RayKind::shadow, {point, toward.direction, context.time}, 0, 1.0,
+                       &light);
   if (!light.projected_through.empty() && !crosses_projection(light, point, toward, context.time))
     return Color(0);
   Color c = shadow_filter(point, normal, toward.direction, toward.distance, colour, context);

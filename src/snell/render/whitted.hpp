@@ -18,13 +18,16 @@ class WhittedIntegrator final : public Integrator {
  public:
   WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator);
 
-  math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context) const override;
+  math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context,
+                               double max_distance = math::kInfinity) const override;
   std::string_view name() const override { return "whitted"; }
 
   /// Colour seen along `ray` (unit direction) at recursion `level` (camera rays are level 1), with the
   /// ray's contribution `weight` to the pixel: black past max_trace_level or below adc_bailout.
+  /// `max_distance` limits what the ray sees (camera rays of a mesh camera).
   math::Color trace(const math::Ray& ray, scene::RayKind kind, int level, double weight,
-                    const InteriorStack& inside, TraceContext& context) const;
+                    const InteriorStack& inside, TraceContext& context,
+                    double max_distance = math::kInfinity) const;
 
  private:
   struct ShadingPoint;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "snell/math/constants.hpp"
+#include "snell/scene/mesh_camera.hpp"
 
 namespace snell::scene {
 
@@ -181,6 +182,8 @@ class ProjectionCamera final : public Camera {
         const double a = y * angle;
         return RayStart{o + x * aspect_ * right_, std::sin(a) * up_ + std::cos(a) * direction_};
       }
+      case Kind::mesh:
+        return std::nullopt;  // MeshCamera makes these
       case Kind::spherical: {
         // Latitude first (about right), then longitude (about up).
         const double lat = y * spec_.v_angle * math::kPi / 180;
@@ -207,9 +210,45 @@ class ProjectionCamera final : public Camera {
   double focal_scale_ = 1;
 };
 
+/// A mesh_camera; focal blur does not apply (its lens point is ignored).
+class MeshCamera final : public Camera {
+ public:
+  MeshCamera(const CameraSpec& s, int width, int height)
+      : rays_(*s.mesh, s.location.z, s.direction.z < -kMeshReverseEpsilon, width, height),
+        max_distance_(s.mesh->max_distance > 0 ? s.mesh->max_distance : math::kInfinity) {}
+
+  std::optional<math::Ray> generate_ray(double sx, double sy, double time) const override {
+    return generate_numbered_ray(sx, sy, 0, time);
+  }
+  std::optional<math::Ray> generate_lens_ray(double sx, double sy, double, double,
+                                             double time) const override {
+    return generate_numbered_ray(sx, sy, 0, time);
+  }
+  int rays_per_point() const override { return rays_.rays_per_pixel(); }
+  std::optional<math::Ray> generate_numbered_ray(double sx, double sy, int ray_number,
+                                                 double time) const override {
+    auto ray = rays_.ray(sx, sy, ray_number, time);
+    if (!ray || length_squared(ray->direction) == 0) return std::nullopt;
+    ray->direction = normalize(ray->direction);
+    return ray;
+  }
+  double max_distance() const override { return max_distance_; }
+
+ private:
+  /// POV-Ray's EPSILON: direction.z below -EPSILON reverses the rays.
+  static constexpr double kMeshReverseEpsilon = 1e-10;
+  MeshCameraRays rays_;
+  double max_distance_;
+};
+
 }  // namespace
 
-std::unique_ptr<Camera> make_camera(const CameraSpec& spec) {
+double Camera::max_distance() const {
+  return math::kInfinity;
+}
+
+std::unique_ptr<Camera> make_camera(const CameraSpec& spec, int width, int height) {
+  if (spec.kind == Kind::mesh && spec.mesh) return std::make_unique<MeshCamera>(spec, width, height);
   return std::make_unique<ProjectionCamera>(spec);
 }
 

@@ -7,6 +7,8 @@
 
 namespace snell::scene {
 
+struct MeshCameraSpec;  // mesh_camera.hpp
+
 /// A POV-Ray camera after all of its modifiers are applied (the parser resolves look_at, sky, angle and
 /// transforms into these final vectors). Left-handed like POV-Ray: right x up = direction.
 struct CameraSpec {
@@ -22,6 +24,7 @@ struct CameraSpec {
     cylinder3,  // vertical cylinder, viewpoint moves along up
     cylinder4,  // horizontal cylinder, viewpoint moves along right
     spherical,
+    mesh,  // mesh_camera: rays from the faces of meshes (mesh_camera.hpp)
   };
   Kind kind = Kind::perspective;
   math::Vec3 location{0, 0, 0};
@@ -53,6 +56,10 @@ struct CameraSpec {
   double shutter_close = 0;
   int shutter_samples = 16;
 
+  /// Kind::mesh: the meshes and how pixels map to their faces. Its rays move `location.z` along the face
+  /// normal and reverse when `direction.z` < 0 (POV-Ray's reading of those two vectors for this camera).
+  std::shared_ptr<const MeshCameraSpec> mesh;
+
   bool focal_blur() const { return aperture != 0 && blur_samples > 0; }
   bool motion_blur() const { return shutter_close > shutter_open; }
 };
@@ -69,8 +76,19 @@ class Camera {
   /// radius 1/2 (focal blur). Rays through one image point with any lens point meet on the focal plane.
   virtual std::optional<math::Ray> generate_lens_ray(double sx, double sy, double lens_u, double lens_v,
                                                      double time) const = 0;
+  /// How many rays one image point averages (a mesh camera's rays_per_pixel; 1 otherwise).
+  virtual int rays_per_point() const { return 1; }
+  /// Ray `ray_number` (below rays_per_point) through (sx, sy); nothing where that ray is not traced.
+  virtual std::optional<math::Ray> generate_numbered_ray(double sx, double sy, int ray_number,
+                                                         double time) const {
+    return ray_number == 0 ? generate_ray(sx, sy, time) : std::nullopt;
+  }
+  /// Camera rays see nothing farther than this (a mesh camera's max_distance).
+  virtual double max_distance() const;
 };
 
-std::unique_ptr<Camera> make_camera(const CameraSpec& spec);
+/// The camera for an image of width x height pixels (only a mesh camera needs them: its faces are indexed
+/// by pixel).
+std::unique_ptr<Camera> make_camera(const CameraSpec& spec, int width = 1, int height = 1);
 
 }  // namespace snell::scene

@@ -3,6 +3,7 @@
 // Sources").
 #include <stdexcept>
 
+#include "snell/geometry/mesh.hpp"
 #include "snell/sdl/degenerate_triangles.hpp"
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/shape_factory.hpp"
@@ -20,6 +21,19 @@ bool is_shape_keyword(const std::string& w) {
   for (const char* s : shapes)
     if (w == s) return true;
   return false;
+}
+
+/// Keeps `uv_indices` parallel to the faces once any triangle has uv_vectors (the others get (0, 0)).
+void add_triangle_uvs(geometry::MeshData& data, const std::array<math::Vec2, 3>& uvs, bool has_uvs) {
+  if (!has_uvs && data.uv_indices.empty()) return;
+  while (data.uv_indices.size() + 1 < data.faces.size()) {
+    const int z = static_cast<int>(data.uvs.size());
+    data.uvs.push_back({0, 0});
+    data.uv_indices.push_back({z, z, z});
+  }
+  const int first = static_cast<int>(data.uvs.size());
+  for (const math::Vec2& uv : uvs) data.uvs.push_back(has_uvs ? uv : math::Vec2{0, 0});
+  data.uv_indices.push_back({first, first + 1, first + 2});
 }
 
 }  // namespace
@@ -308,6 +322,19 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
   o.where = keyword.where;
   expect("{", "mesh");
   if (peek().kind == Token::Kind::string) return parse_mesh_file(keyword);
+  // `mesh { Declared_Mesh modifiers }`: a copy of a declared mesh (POV-Ray's Parse_Object_Id).
+  if (const Token& first = peek(); first.kind == Token::Kind::identifier) {
+    if (const Value* v = lookup(first.text)) {
+      const auto* declared = std::get_if<ParsedObject>(&v->data);
+      if (!declared || !std::dynamic_pointer_cast<const geometry::Mesh>(declared->shape))
+        fail(first.where, "'" + first.text + "' is not a declared mesh");
+      o = *declared;
+      o.where = keyword.where;
+      raw_next();
+      parse_object_modifiers(o);
+      return o;
+    }
+  }
   geometry::MeshData data;
   for (;;) {
     const Token t = peek();
@@ -316,6 +343,8 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
       expect("{", t.text.c_str());
       const bool smooth = t.text == "smooth_triangle";
       std::array<int, 3> face{}, normals{};
+      std::array<math::Vec2, 3> uvs{};
+      bool has_uvs = false;
       for (int i = 0; i < 3; ++i) {
         if (i > 0) accept(",");  // POV-Ray's Parse_Comma: the commas may be left out
         face[static_cast<size_t>(i)] = static_cast<int>(data.vertices.size());
@@ -332,6 +361,18 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
           raw_next();
           break;
         }
+        if (m.is_word("uv_vectors")) {
+          // Per-triangle uv coordinates (POV-Ray's Parse_Three_UVCoords; triangles without them get
+          // (0, 0) at every corner).
+          raw_next();
+          for (int i = 0; i < 3; ++i) {
+            if (i > 0) accept(",");
+            const math::Vec3 uv = parse_vector();
+            uvs[static_cast<size_t>(i)] = {uv.x, uv.y};
+          }
+          has_uvs = true;
+          continue;
+        }
         if (m.is_word("texture")) {
           warn(m.where, "per-triangle mesh textures are not supported yet; ignored");
           raw_next();
@@ -345,6 +386,7 @@ ParsedObject Parser::parse_mesh(const Token& keyword) {
       constexpr size_t kBlock = 4096;
       if (data.faces.size() % kBlock == 1)
         keep_memory(t.where, kBlock * (3 * sizeof(math::Vec3) + 2 * sizeof(face)), "mesh triangles");
+      add_triangle_uvs(data, uvs, has_uvs);
       if (smooth) {
         if (data.normal_indices.size() < data.faces.size() - 1) {
           // An earlier flat triangle: give it its own face normal slots pointing nowhere (zero).

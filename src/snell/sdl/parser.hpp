@@ -374,6 +374,8 @@ class Parser {
   // ---- scene items (scene_items.cpp) ----
   void parse_scene_items();
   scene::CameraSpec parse_camera(const scene::CameraSpec& base);
+  /// `{ ... }` after `mesh_camera` (mesh_camera_block.cpp).
+  void parse_mesh_camera(scene::CameraSpec& cam, const Token& keyword);
   void parse_global_settings();
   /// `{ ... }` after global_settings' `radiosity` (radiosity_block.cpp).
   scene::RadiositySettings parse_radiosity_block();

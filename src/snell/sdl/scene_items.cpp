@@ -270,7 +270,9 @@ scene::CameraSpec Parser::parse_camera(const scene::CameraSpec& base) {
         cam.variance = v;
       else
         warn(t.where, "variance must be between 0 and 1; keeping the default");
-    } else if (w == "mesh_camera" || w == "user_defined")
+    } else if (w == "mesh_camera")
+      parse_mesh_camera(cam, t);
+    else if (w == "user_defined")
       fail(t.where, "the " + w + " camera is not supported yet");
     else if (w == "normal") {
       warn(t.where, "camera normal is not supported yet; ignored");
