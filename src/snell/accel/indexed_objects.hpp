@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/object_test_counter.hpp"
 
 #include "snell/math/bounds.hpp"
 #include "snell/scene/scene.hpp"
@@ -22,6 +23,7 @@ math::Bounds3 culling_bounds(const scene::Object& object);
 inline bool test_object(const scene::Object& object, const math::Ray& ray, double t_min, double t_max,
                         scene::RayKind kind, scene::SurfaceHit& hit) {
   if (!object.visible_to(kind)) return false;
+  ObjectTestCounter::count();
   if (object.bounded_by && !object.bounded_by->clip(ray, t_min, t_max)) return false;
   return object.intersect(ray, t_min, t_max, hit);
 }
