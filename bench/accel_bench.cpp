@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/object_test_counter.hpp"
 #include "snell/geometry/sphere.hpp"
 #include "snell/math/pcg32.hpp"
 
@@ -68,6 +69,16 @@ void run(benchmark::State& state, const char* kind, bool coherent) {
     }
   }
   benchmark::DoNotOptimize(hits);
+  // Work per ray, from one more pass with the counter on (kept out of the timed loop: it costs an atomic).
+  accel::ObjectTestCounter::tests = 0;
+  accel::ObjectTestCounter::enabled = true;
+  for (const math::Ray& ray : rays) {
+    scene::SurfaceHit hit;
+    accel->intersect(ray, 1e-6, math::kInfinity, scene::RayKind::camera, hit);
+  }
+  accel::ObjectTestCounter::enabled = false;
+  state.counters["tests/ray"] =
+      static_cast<double>(accel::ObjectTestCounter::tests.load()) / static_cast<double>(rays.size());
   state.counters["rays/s"] =
       benchmark::Counter(static_cast<double>(state.iterations() * rays.size()), benchmark::Counter::kIsRate);
   state.counters["build_ms"] = accel->stats().build_seconds * 1e3;

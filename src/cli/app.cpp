@@ -24,6 +24,7 @@
 #include "cli/video.hpp"
 #include "cli/watch.hpp"
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/object_test_counter.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
 #include "snell/memory/budget.hpp"
@@ -222,6 +223,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   const auto t_build = Clock::now();
   const auto accelerator = build_accelerator(o.accel, scene);
   const double build_s = seconds_since(t_build);
+  accel::ObjectTestCounter::enabled = o.stats;  // tests per ray for --stats; a shared counter, so only then
 
   render::RenderOptions ro;
   ro.width = o.width;
@@ -316,9 +318,13 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   }
   if (o.stats) {
     const accel::AcceleratorStats a = accelerator->stats();
-    fmt::print(stderr, "  accel: {} objects ({} unbounded), {} nodes, {:.1f} KiB, built in {:.3f}s\n",
-               a.objects, a.unbounded_objects, a.nodes, static_cast<double>(a.memory_bytes) / 1024,
-               a.build_seconds);
+    const double tests = static_cast<double>(accel::ObjectTestCounter::tests.load());
+    fmt::print(
+        stderr,
+        "  accel: {} objects ({} unbounded), {} nodes, {:.1f} KiB, built in {:.3f}s, {:.2f} object tests per "
+        "ray\n",
+        a.objects, a.unbounded_objects, a.nodes, static_cast<double>(a.memory_bytes) / 1024, a.build_seconds,
+        tests / static_cast<double>(std::max<uint64_t>(1, result.rays.total())));
   }
   if (preview) preview->finish(o.display_snapshot, o.pause_when_done, &g_interrupted);
   if (result.cancelled) {

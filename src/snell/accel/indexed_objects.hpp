@@ -7,6 +7,7 @@
 
 #include "snell/accel/accelerator.hpp"
 #include "snell/accel/query_cost.hpp"
+#include "snell/accel/object_test_counter.hpp"
 
 #include "snell/math/bounds.hpp"
 #include "snell/scene/scene.hpp"
@@ -24,6 +25,7 @@ inline bool test_object(const scene::Object& object, const math::Ray& ray, doubl
                         scene::RayKind kind, scene::SurfaceHit& hit) {
   if (!object.visible_to(kind)) return false;
   count_object_test(object);
+  ObjectTestCounter::count();
   if (object.bounded_by && !object.bounded_by->clip(ray, t_min, t_max)) return false;
   return object.intersect(ray, t_min, t_max, hit);
 }

@@ -1,6 +1,7 @@
 #include "snell/accel/octree.hpp"
 
 #include <array>
+#include <bit>
 #include <chrono>
 
 #include "snell/accel/indexed_objects.hpp"
@@ -19,15 +20,36 @@ constexpr int kStackSize = 7 * kMaxDepth + 8;
 // object every further node becomes a leaf.
 constexpr size_t kEntriesPerObject = 16;
 
-math::Bounds3 octant(const math::Bounds3& box, int child) {
+/// The axes a node is halved along: those at least half as long as its longest side. Halving a thin side
+/// (a flat layer of objects) would cut every object in two and list it in both halves without separating
+/// anything, so such a node has four or two children instead of eight (an adaptive octree, as in the
+/// "adaptive hierarchical" space subdivision of Kaplan, 1985, where cells follow the scene's shape).
+uint8_t split_axes(const math::Bounds3& box) {
+  const math::Vec3 size = box.hi - box.lo;
+  const double longest = max_component(size);
+  uint8_t axes = 0;
+  for (int a = 0; a < 3; ++a)
+    if (size[a] >= 0.5 * longest) axes |= static_cast<uint8_t>(1u << a);
+  return axes;
+}
+
+/// Child `child` of a node halved along `axes`: bit j of `child` selects the upper half along the j-th
+/// split axis.
+math::Bounds3 octant(const math::Bounds3& box, uint8_t axes, uint32_t child) {
   const math::Vec3 mid = box.center();
-  math::Bounds3 b;
+  math::Bounds3 b = box;
+  int j = 0;
   for (int a = 0; a < 3; ++a) {
-    const bool upper = (child >> a) & 1;
+    if (!((axes >> a) & 1)) continue;
+    const bool upper = (child >> j++) & 1;
     b.lo[a] = upper ? mid[a] : box.lo[a];
     b.hi[a] = upper ? box.hi[a] : mid[a];
   }
   return b;
+}
+
+int child_count(uint8_t axes) {
+  return 1 << std::popcount(axes);
 }
 
 bool overlaps(const math::Bounds3& a, const math::Bounds3& b) {
@@ -45,7 +67,7 @@ class OctreeBuilder {
     if (in_.bounded.empty()) return;
     std::vector<uint32_t> all(in_.bounded.size());
     for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
-    tree_.nodes_.push_back({in_.scene_box, 0, 0, true});
+    tree_.nodes_.push_back({in_.scene_box, 0, 0, true, 0});
     build_node(0, all, 0);
   }
 
@@ -59,11 +81,15 @@ class OctreeBuilder {
       tree_.entries_.insert(tree_.entries_.end(), objects.begin(), objects.end());
       return;
     }
+    const uint8_t axes = split_axes(box);
     const auto first = static_cast<uint32_t>(tree_.nodes_.size());
     tree_.nodes_[index].first = first;
     tree_.nodes_[index].leaf = false;
-    for (int c = 0; c < 8; ++c) tree_.nodes_.push_back({octant(box, c), 0, 0, true});
-    for (int c = 0; c < 8; ++c) {
+    tree_.nodes_[index].axes = axes;
+    const int children = child_count(axes);
+    for (int c = 0; c < children; ++c)
+      tree_.nodes_.push_back({octant(box, axes, static_cast<uint32_t>(c)), 0, 0, true, 0});
+    for (int c = 0; c < children; ++c) {
       const math::Bounds3 child_box = tree_.nodes_[first + c].box;
       std::vector<uint32_t> inside;
       for (uint32_t o : objects)
@@ -95,9 +121,18 @@ bool Octree::intersect(const math::Ray& ray, double t_min, double t_max, scene::
   if (nodes_.empty() || !(t_min < t_max)) return found;
   const RayBox slabs(ray);
   // Numbering children by (number XOR near) gives an order in which a ray never goes back: it can only
-  // cross from the near to the far half on each axis.
-  const uint32_t near =
-      (ray.direction.x < 0 ? 1u : 0u) | (ray.direction.y < 0 ? 2u : 0u) | (ray.direction.z < 0 ? 4u : 0u);
+  // cross from the near to the far half on each axis. `near` depends on which axes a node splits.
+  std::array<uint32_t, 8> near_for_axes;
+  for (uint32_t axes = 0; axes < 8; ++axes) {
+    uint32_t near = 0;
+    int j = 0;
+    for (int a = 0; a < 3; ++a) {
+      if (!((axes >> a) & 1)) continue;
+      if (ray.direction[a] < 0) near |= 1u << j;
+      ++j;
+    }
+    near_for_axes[axes] = near;
+  }
   Mailbox mailbox;
   NodeTally tally;
   std::array<uint32_t, kStackSize> stack;
@@ -108,7 +143,9 @@ bool Octree::intersect(const math::Ray& ray, double t_min, double t_max, scene::
     if (!slabs.hits(node.box, t_min, t_max)) continue;
     tally.visit();  // nodes the ray enters, as the BVH counts them
     if (!node.leaf) {
-      for (int i = 7; i >= 0; --i) stack[top++] = node.first + (static_cast<uint32_t>(i) ^ near);
+      const uint32_t near = near_for_axes[node.axes];
+      for (int i = child_count(node.axes) - 1; i >= 0; --i)
+        stack[top++] = node.first + (static_cast<uint32_t>(i) ^ near);
       continue;
     }
     for (uint32_t k = node.first; k < node.first + node.count; ++k) {

@@ -1,6 +1,7 @@
 #pragma once
-// Octree over the objects' boxes: each node splits its box at the centre into eight; an object is listed
-// in every child its box overlaps (tested once per ray, Mailbox). Children are walked near to far.
+// Octree over the objects' boxes: each node splits its box at the centre into eight (into four or two
+// along a thin side, so flat scenes still separate); an object is listed in every child its box overlaps
+// (tested once per ray, Mailbox). Children are walked near to far.
 #include <cstdint>
 #include <vector>
 
@@ -18,11 +19,13 @@ class Octree final : public Accelerator {
 
   struct Node {
     math::Bounds3 box;
-    /// Interior: index of the first of eight consecutive children (bit a of a child's number set for the
-    /// upper half along axis a). Leaf: first entry in `entries_`.
+    /// Interior: index of the first of 2^(axes split) consecutive children (bit j of a child's number set
+    /// for the upper half along the j-th split axis). Leaf: first entry in `entries_`.
     uint32_t first = 0;
     uint32_t count = 0;
     bool leaf = true;
+    /// Interior: bit a set when the node is halved along axis a.
+    uint8_t axes = 0;
   };
 
  private:

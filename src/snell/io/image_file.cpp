@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "snell/io/image_backend.hpp"
+#include "snell/io/png_reader.hpp"
 #include "snell/io/png_writer.hpp"
 
 namespace snell::io {
@@ -112,6 +114,7 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
 }
 
 Image read_image(const fs::path& path) {
+  if (std::optional<Image> png = read_png(path)) return std::move(*png);  // no plugin to load for PNG
   const ImageBackend& backend = image_backend();
   int width = 0, height = 0, channels = 0;
   float* pixels = nullptr;
