@@ -25,11 +25,12 @@ TEST(ParticleFrames, AFrameAloneEqualsTheSameClockAnyThreads) {
   std::filesystem::create_directories(dir);
   const std::string scene = std::string(SNELL_SOURCE_DIR) + "/scenes/fireworks.pov";
   const std::string common = std::string(SNELL_BINARY) + " +I" + scene + " +W80 +H60 -D ";
-  const auto frame = test::run_command(common + "+KFI1 +KFF20 +SF7 +WT2 +O" + (dir / "a.png").string());
+  // Frame 7 of 1..20, rendered alone (+SF7 +EF7), is written as a07.png.
+  const auto frame = test::run_command(common + "+KFI1 +KFF20 +SF7 +EF7 +WT2 +O" + (dir / "a.png").string());
   const auto clock = test::run_command(common + "+KI0.3157894736842105 +WT1 +O" + (dir / "b.png").string());
   ASSERT_EQ(frame.code, 0) << frame.output;
   ASSERT_EQ(clock.code, 0) << clock.output;
-  const std::string a = read_bytes(dir / "a.png"), b = read_bytes(dir / "b.png");
+  const std::string a = read_bytes(dir / "a07.png"), b = read_bytes(dir / "b.png");
   std::filesystem::remove_all(dir);
   EXPECT_FALSE(a.empty());
   EXPECT_EQ(a, b);

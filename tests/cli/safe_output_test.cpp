@@ -137,19 +137,24 @@ TEST(SafeOutput, FullDiskKeepsThePreviousImageAndFrame) {
   const fs::path scene = scene_file(dir);
   ScratchDisk disk(dir / "disk", 64);
   if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (" << disk.why() << ")";
-  // A still image, an EXR through the image plugin, and frame 2 of an animation (+KFF/+SF).
-  const std::vector<std::pair<std::string, std::string>> cases{
-      {"out.png", ""}, {"out.exr", ""}, {"frame2.png", "+KFI1 +KFF4 +SF2"}};
+  // A still image, an EXR through the image plugin, and frame 2 of an animation (+KFF/+SF/+EF): the
+  // output `frame.png` names the frame file frame2.png, as POV-Ray numbers frames.
+  struct Case {
+    std::string written, output, flags;
+  };
+  const std::vector<Case> cases{{"out.png", "out.png", ""},
+                                {"out.exr", "out.exr", ""},
+                                {"frame2.png", "frame.png", "+KFI1 +KFF4 +SF2 +EF2"}};
   std::vector<std::string> names{"filler"};
-  for (const auto& [name, flags] : cases) {
-    std::ofstream(disk.path() / name) << kPrevious;
-    names.push_back(name);
+  for (const Case& c : cases) {
+    std::ofstream(disk.path() / c.written) << kPrevious;
+    names.push_back(c.written);
   }
   disk.fill();
-  for (const auto& [name, flags] : cases) {
-    const fs::path out = disk.path() / name;
-    expect_output_error(render_to(scene, out, flags), out, "");
-    EXPECT_EQ(read_bytes(out), kPrevious) << name;
+  for (const Case& c : cases) {
+    const fs::path written = disk.path() / c.written;
+    expect_output_error(render_to(scene, disk.path() / c.output, c.flags), written, "");
+    EXPECT_EQ(read_bytes(written), kPrevious) << c.written;
   }
   EXPECT_TRUE(leftovers(disk.path(), names).empty());
 }

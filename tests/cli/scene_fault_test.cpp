@@ -98,7 +98,7 @@ TEST(SceneFaults, MatrixStillSingularIsAnError) {
 TEST(SceneFaults, MissingImageMapFileIsLocated) {
   const FaultRun run =
       render_fault_scene("missing_image", "plane { z, 1 pigment { image_map { png \"no_such.png\" } } }\n");
-  expect_scene_error(run, "missing_image.pov:3:40:", "cannot find image file \"no_such.png\"");
+  expect_scene_error(run, "missing_image.pov:3:40:", "cannot find file \"no_such.png\"");
 }
 
 TEST(SceneFaults, MissingHeightFieldFileIsLocated) {
