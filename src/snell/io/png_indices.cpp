@@ -2,7 +2,6 @@
 // one byte each without expanding them through the palette.
 #include "snell/io/png_indices.hpp"
 
-#include <csetjmp>
 #include <cstdio>
 
 #include "snell/io/image_file.hpp"
@@ -26,31 +25,21 @@ struct PngRead {
 };
 
 Outcome decode(PngRead& job) {
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &job.error, on_png_error, on_png_warning);
-  if (!png) return Outcome::damaged;
-  png_infop info = png_create_info_struct(png);
-  if (!info || setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
-    return Outcome::damaged;
-  }
-  png_init_io(png, job.file);
-  png_read_info(png, info);
-  if (png_get_color_type(png, info) != PNG_COLOR_TYPE_PALETTE ||
-      png_get_interlace_type(png, info) != PNG_INTERLACE_NONE) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    return Outcome::not_indexed;
-  }
-  const png_uint_32 width = png_get_image_width(png, info), height = png_get_image_height(png, info);
-  if (std::uint64_t{width} * height > kMaxPixels) png_error(png, "size out of range");
-  png_set_packing(png);  // one index per byte
-  png_read_update_info(png, info);
-  job.image->width = static_cast<int>(width);
-  job.image->height = static_cast<int>(height);
-  job.image->indices.resize(std::size_t{width} * height);
-  for (png_uint_32 y = 0; y < height; ++y)
-    png_read_row(png, &job.image->indices[std::size_t{y} * width], nullptr);
-  png_destroy_read_struct(&png, &info, nullptr);
-  return Outcome::indexed;
+  return read_png_frame(job.file, job.error, Outcome::damaged, [&job](png_structp png, png_infop info) {
+    if (png_get_color_type(png, info) != PNG_COLOR_TYPE_PALETTE ||
+        png_get_interlace_type(png, info) != PNG_INTERLACE_NONE)
+      return Outcome::not_indexed;
+    const png_uint_32 width = png_get_image_width(png, info), height = png_get_image_height(png, info);
+    if (std::uint64_t{width} * height > kMaxPixels) png_error(png, "size out of range");
+    png_set_packing(png);  // one index per byte
+    png_read_update_info(png, info);
+    job.image->width = static_cast<int>(width);
+    job.image->height = static_cast<int>(height);
+    job.image->indices.resize(std::size_t{width} * height);
+    for (png_uint_32 y = 0; y < height; ++y)
+      png_read_row(png, &job.image->indices[std::size_t{y} * width], nullptr);
+    return Outcome::indexed;
+  });
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 #include "snell/io/png_reader.hpp"
 
-#include <csetjmp>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -34,36 +33,25 @@ enum class Outcome { decoded, declined, damaged };
 constexpr png_uint_32 kLeftToPlugin =
     PNG_INFO_tRNS | PNG_INFO_gAMA | PNG_INFO_sRGB | PNG_INFO_iCCP | PNG_INFO_cHRM;
 
-/// libpng reports errors by longjmp back to the setjmp here; the job's vectors live outside this frame.
+/// The job's vectors live outside read_png_frame's jump target (png_errors.hpp).
 Outcome decode(PngRead& job) {
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &job.error, on_png_error, on_png_warning);
-  if (!png) return Outcome::damaged;
-  png_infop info = png_create_info_struct(png);
-  if (!info || setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
-    return Outcome::damaged;
-  }
-  png_init_io(png, job.file);
-  png_read_info(png, info);
-  if (png_get_valid(png, info, kLeftToPlugin) != 0) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    return Outcome::declined;
-  }
-  job.width = png_get_image_width(png, info);
-  job.height = png_get_image_height(png, info);
-  if (std::uint64_t{job.width} * job.height > kMaxPixels) png_error(png, "size out of range");
-  png_set_expand(png);  // palette to RGB, grey below 8 bits to 8
-  png_set_interlace_handling(png);
-  png_read_update_info(png, info);
-  job.channels = png_get_channels(png, info);
-  job.bits = png_get_bit_depth(png, info);
-  const std::size_t row_bytes = png_get_rowbytes(png, info);
-  job.samples.resize(row_bytes * job.height);
-  job.rows.resize(job.height);
-  for (png_uint_32 y = 0; y < job.height; ++y) job.rows[y] = &job.samples[row_bytes * y];
-  png_read_image(png, job.rows.data());
-  png_destroy_read_struct(&png, &info, nullptr);
-  return Outcome::decoded;
+  return read_png_frame(job.file, job.error, Outcome::damaged, [&job](png_structp png, png_infop info) {
+    if (png_get_valid(png, info, kLeftToPlugin) != 0) return Outcome::declined;
+    job.width = png_get_image_width(png, info);
+    job.height = png_get_image_height(png, info);
+    if (std::uint64_t{job.width} * job.height > kMaxPixels) png_error(png, "size out of range");
+    png_set_expand(png);  // palette to RGB, grey below 8 bits to 8
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    job.channels = png_get_channels(png, info);
+    job.bits = png_get_bit_depth(png, info);
+    const std::size_t row_bytes = png_get_rowbytes(png, info);
+    job.samples.resize(row_bytes * job.height);
+    job.rows.resize(job.height);
+    for (png_uint_32 y = 0; y < job.height; ++y) job.rows[y] = &job.samples[row_bytes * y];
+    png_read_image(png, job.rows.data());
+    return Outcome::decoded;
+  });
 }
 
 }  // namespace
