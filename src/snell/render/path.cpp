@@ -8,6 +8,7 @@
 #include "snell/render/interior_stack.hpp"
 #include "snell/render/light_ray.hpp"
 #include "snell/render/optics.hpp"
+#include "snell/render/sphere_emitters.hpp"
 #include "snell/render/whitted.hpp"
 
 namespace snell::render {
@@ -44,10 +45,65 @@ double grey_max(const Color& c) {
   return std::max(0.0, c.max());
 }
 
+/// Density (e+1)/(2 pi) cos^e of `sample_lobe` around `axis` at direction `dir`.
+double lobe_pdf(const Vec3& axis, const Vec3& dir, double exponent) {
+  const double c = dot(axis, dir);
+  return c > 0 ? (exponent + 1) / (2 * std::numbers::pi) * std::pow(c, exponent) : 0;
+}
+
 }  // namespace
 
 PathIntegrator::PathIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)
-    : scene_(scene), accel_(accelerator) {}
+    : scene_(scene), accel_(accelerator), emitters_(find_sphere_emitters(scene)) {}
+
+Color PathIntegrator::emitted(const material::Finish& f, const material::Rgbft& pc) const {
+  // An object without any reflection lobe glows with its ambient colour (POV-Ray's way of making visible
+  // light shapes).
+  const bool reflects_light = f.diffuse > 0 || f.specular > 0 || f.phong > 0;
+  Color e = f.emission;
+  if (!reflects_light && f.ambient_set) e += f.ambient * scene_.settings.ambient_light;
+  const double opacity = std::clamp(1.0 - pc.filter * pc.rgb.max() - pc.transmit, 0.0, 1.0);
+  return pc.rgb * e * opacity;
+}
+
+double PathIntegrator::emitter_pdf(const scene::Object* object, const Vec3& from) const {
+  for (const SphereEmitter& e : emitters_)
+    if (e.object == object) return sphere_cone_pdf(e, from) / static_cast<double>(emitters_.size());
+  return 0;
+}
+
+Color PathIntegrator::sample_emitters(const Vec3& point, const Vec3& n, const Vec3& wo, const Lobes& lobes,
+                                      double time, TraceContext& context) const {
+  if (emitters_.empty()) return {};
+  // One emitter chosen uniformly, one direction in its cone.
+  const double u0 = context.rng.next_double();
+  const double u1 = context.rng.next_double();
+  const double u2 = context.rng.next_double();
+  const std::size_t count = emitters_.size();
+  const SphereEmitter& e = emitters_[std::min(count - 1, static_cast<std::size_t>(u0 * count))];
+  const auto dir = sample_sphere_cone(e, point, u1, u2);
+  if (!dir) return {};
+  const double cos_n = dot(n, *dir);
+  if (cos_n <= 0) return {};
+  const double pdf_light = sphere_cone_pdf(e, point) / static_cast<double>(count);
+  scene::SurfaceHit hit;
+  const math::Ray ray{offset_origin(point, n), *dir, time};
+  if (!accel_.intersect(ray, 0.0, math::kInfinity, scene::RayKind::reflection, hit) || hit.object != e.object)
+    return {};
+  const Color le = emitted(hit.object->texture->finish_at(hit.point),
+                           hit.object->texture->pigment_at(hit.point, hit.normal, hit.uv));
+  // Each lobe is its own MIS pair (light sampling vs. that lobe's sampling, chosen with its probability).
+  const Vec3 mirror = math::reflect(-wo, n);
+  const double pdf_diffuse = lobes.p_diffuse * lobe_pdf(n, *dir, 1);
+  const double pdf_glossy = lobes.p_glossy * lobe_pdf(mirror, *dir, lobes.exponent);
+  const Color f_diffuse = lobes.albedo * (cos_n / std::numbers::pi);
+  const Color f_glossy = lobes.glossy * ((lobes.exponent + 2) / (2 * std::numbers::pi) *
+                                         std::pow(std::max(0.0, dot(mirror, *dir)), lobes.exponent) * cos_n);
+  return le *
+         (f_diffuse * power_heuristic(pdf_light, pdf_diffuse) +
+          f_glossy * power_heuristic(pdf_light, pdf_glossy)) /
+         pdf_light;
+}
 
 bool PathIntegrator::occluded(const Vec3& point, const Vec3& n, const Vec3& dir, double distance) const {
   const Vec3 origin = offset_origin(point, dot(n, dir) >= 0 ? n : -n);
@@ -86,6 +142,12 @@ Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext
   Color throughput(1);
   math::Ray ray = camera_ray;
   InteriorStack inside;
+  // The vertex the ray left from and the density with which its lobe chose the ray's direction (0 for
+  // the camera and for mirror and refraction, which emitter sampling cannot reach).
+  struct {
+    Vec3 point;
+    double lobe_pdf = 0;
+  } previous;
   for (int bounce = 0; bounce < kMaxBounces; ++bounce) {
     scene::SurfaceHit hit;
     // A mesh camera's max_distance limits the camera ray only.
@@ -101,12 +163,13 @@ Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext
     const Vec3 wo = -ray.direction;
     const double opacity = std::clamp(1.0 - pc.filter * pc.rgb.max() - pc.transmit, 0.0, 1.0);
 
-    // Emission; an object without any reflection lobe glows with its ambient colour (POV-Ray's way of
-    // making visible light shapes).
-    const bool reflects_light = f.diffuse > 0 || f.specular > 0 || f.phong > 0;
-    Color emitted = f.emission;
-    if (!reflects_light && f.ambient_set) emitted += f.ambient * scene_.settings.ambient_light;
-    radiance += throughput * pc.rgb * emitted * opacity;
+    // Emission, weighted against the previous vertex's emitter sampling when it could have found it.
+    double weight = 1;
+    if (previous.lobe_pdf > 0) {
+      const double pdf_light = emitter_pdf(hit.object, previous.point);
+      if (pdf_light > 0) weight = power_heuristic(previous.lobe_pdf, pdf_light);
+    }
+    radiance += throughput * emitted(f, pc) * weight;
 
     // The finish's lobes and their weights.
     const Color albedo = pc.rgb * (f.diffuse * opacity);
@@ -119,8 +182,11 @@ Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext
     const double total = weights[0] + weights[1] + weights[2] + weights[3];
     if (total <= 0) break;
 
-    if (weights[0] + weights[1] > 0)
+    const Lobes lobes{albedo, glossy, exponent, weights[0] / total, weights[1] / total};
+    if (weights[0] + weights[1] > 0) {
       radiance += throughput * sample_lights(hit.point, n, wo, albedo, glossy, exponent, context);
+      radiance += throughput * sample_emitters(hit.point, n, wo, lobes, ray.time, context);
+    }
 
     // Choose one lobe in proportion to its weight; the throughput divides by that probability.
     double pick = context.rng.next_double() * total;
@@ -132,15 +198,18 @@ Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext
     if (lobe == 0) {
       dir = sample_lobe(n, 1, context.rng);
       throughput *= albedo / p;
+      previous.lobe_pdf = lobes.p_diffuse * lobe_pdf(n, dir, 1);
       // Direct light was counted by next-event estimation; indirect light only from here on.
     } else if (lobe == 1) {
       dir = sample_lobe(math::reflect(ray.direction, n), exponent, context.rng);
       if (dot(dir, n) <= 0) break;
       // Lobe density (e+1)/(2pi) cos^e against the normalised lobe (e+2)/(2pi) cos^e times cos(n, dir).
       throughput *= glossy * ((exponent + 2) / (exponent + 1) * dot(dir, n) / p);
+      previous.lobe_pdf = lobes.p_glossy * lobe_pdf(math::reflect(ray.direction, n), dir, exponent);
     } else if (lobe == 2) {
       dir = math::reflect(ray.direction, n);
       throughput *= mirror_colour / p;
+      previous.lobe_pdf = 0;
     } else {
       const scene::Object* solid = hit.solid ? hit.solid : hit.object;
       const double ior = ior_of(solid);
@@ -159,7 +228,9 @@ Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext
           inside.remove(solid);
       }
       throughput *= transmit / p;
+      previous.lobe_pdf = 0;
     }
+    previous.point = hit.point;
     // Emission of the next surface is counted as found, so a diffuse bounce must not see point lights
     // twice: point and area lights are not hittable here, so nothing is counted twice.
     if (bounce >= kRouletteAfter) {
