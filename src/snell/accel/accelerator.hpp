@@ -16,6 +16,9 @@ struct AcceleratorStats {
   /// Nodes (grid: cells) and bytes of the structure; 0 where not known (Embree, brute force).
   size_t nodes = 0;
   size_t memory_bytes = 0;
+  /// Embree only: triangles stored natively (each distinct mesh once) and the instances placing them.
+  size_t native_triangles = 0;
+  size_t mesh_instances = 0;
 };
 
 class Accelerator {

@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include "snell/accel/embree_meshes.hpp"
 #include "snell/accel/indexed_objects.hpp"
 
 #include <algorithm>
@@ -53,6 +54,11 @@ struct EmbreeAccelerator::Impl {
   RTCScene scene = nullptr;
   std::vector<const scene::Object*> bounded;
   std::vector<const scene::Object*> unbounded;
+  /// Objects whose meshes Embree walks as native triangles (embree_meshes.hpp), and the object of each
+  /// instance by its geometry id in `scene`.
+  std::vector<const scene::Object*> native;
+  std::vector<const scene::Object*> instance_objects;
+  std::unique_ptr<MeshSceneCache> meshes;
   Bounds3 scene_bounds;  // union of the bounded objects' boxes, padded
   double pad = 0;        // absolute padding of every box, world units
 
@@ -61,6 +67,7 @@ struct EmbreeAccelerator::Impl {
 
   ~Impl() {
     if (scene) rtcReleaseScene(scene);
+    meshes.reset();
     if (device) rtcReleaseDevice(device);
   }
 
@@ -111,6 +118,31 @@ struct EmbreeAccelerator::Impl {
     RTCHitN_geomID(hit, 1, 0) = args->geomID;
     RTCHitN_primID(hit, 1, 0) = args->primID;
   }
+
+  // A native triangle Embree found in float: redone in double on the object's own ray and kept only when
+  // it is visible to the ray's kind and nearer than the best double hit so far.
+  static void triangle_filter(const RTCFilterFunctionNArguments* args) {
+    if (!args->valid[0]) return;  // rtcIntersect1 always passes N = 1
+    auto* q = reinterpret_cast<QueryContext*>(args->context);
+    const auto* self = static_cast<const Impl*>(args->geometryUserPtr);
+    const unsigned instance = RTCHitN_instID(args->hit, args->N, 0, 0);
+    const unsigned face = RTCHitN_primID(args->hit, args->N, 0);
+    const scene::Object* object =
+        instance < self->instance_objects.size() ? self->instance_objects[instance] : nullptr;
+    if (!object || !object->visible_to(q->kind)) {
+      args->valid[0] = 0;
+      return;
+    }
+    const auto* mesh = static_cast<const geometry::Mesh*>(object->shape.get());
+    const auto local = mesh->face_hit(static_cast<int>(face), object->transform.inverse_ray(*q->ray));
+    if (!local || !(local->t > q->t_min && local->t < q->t_max)) {
+      args->valid[0] = 0;
+      return;
+    }
+    *q->hit = object->to_world(*q->ray, *local);
+    q->t_max = local->t;
+    q->found = true;
+  }
 };
 
 EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
@@ -124,7 +156,10 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
     // builder silently drops primitives with bounds outside it.
     const bool in_range = max_component(math::abs(b.lo)) < kMaxEmbreeCoordinate &&
                           max_component(math::abs(b.hi)) < kMaxEmbreeCoordinate;
-    if (b.is_finite() && !b.empty() && in_range) {
+    if (native_mesh_of(*o, kMaxEmbreeCoordinate)) {
+      s.native.push_back(o.get());
+      s.scene_bounds.unite(b);
+    } else if (b.is_finite() && !b.empty() && in_range) {
       s.bounded.push_back(o.get());
       s.scene_bounds.unite(b);
     } else {
@@ -134,7 +169,7 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
   // The float ray Embree walks starts inside the scene box (see intersect), so its distance from the double
   // ray stays below a few float ulps of the scene's magnitude; padding every box by 2^-18 of that magnitude
   // (about 30 ulps) keeps each double hit inside its float box.
-  if (!s.bounded.empty()) {
+  if (!s.bounded.empty() || !s.native.empty()) {
     const double scale =
         std::max(max_component(math::abs(s.scene_bounds.lo)), max_component(math::abs(s.scene_bounds.hi)));
     s.pad = std::max(scale * 0x1p-18, 1e-30);
@@ -161,11 +196,20 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
     rtcAttachGeometry(s.scene, geometry);
     rtcReleaseGeometry(geometry);
   }
+  s.meshes = std::make_unique<MeshSceneCache>(s.device, &s, &Impl::triangle_filter);
+  for (const scene::Object* object : s.native) {
+    const auto& mesh = static_cast<const geometry::Mesh&>(*object->shape);
+    const unsigned id = attach_mesh_instance(s.device, s.scene, s.meshes->scene_of(mesh), *object);
+    if (id >= s.instance_objects.size()) s.instance_objects.resize(id + 1, nullptr);
+    s.instance_objects[id] = object;
+  }
   rtcCommitScene(s.scene);
   s.check("embree: building the scene");
 
   stats_.objects = scene.objects.size();
   stats_.unbounded_objects = s.unbounded.size();
+  stats_.native_triangles = s.meshes->triangles();
+  stats_.mesh_instances = s.native.size();
   stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -176,12 +220,13 @@ bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, sc
   const Impl& s = *impl_;
   bool found = test_all(s.unbounded, ray, t_min, t_max, kind, hit);
   // An empty or NaN window (caught by the negated test) has no hits; Embree must not see NaN rays.
-  if (s.bounded.empty() || !(t_min < t_max)) return found;
+  if ((s.bounded.empty() && s.native.empty()) || !(t_min < t_max)) return found;
 
   const double length = math::length(ray.direction);
   if (!(length > 0) || !std::isfinite(length) || !math::is_finite(ray.origin)) {
     // Nothing Embree can walk; fall back to testing every object, still in double precision.
-    return test_all(s.bounded, ray, t_min, t_max, kind, hit) || found;
+    const bool any_bounded = test_all(s.bounded, ray, t_min, t_max, kind, hit);
+    return test_all(s.native, ray, t_min, t_max, kind, hit) || any_bounded || found;
   }
 
   // Start the float ray where the double ray enters the scene box, not at the (possibly distant) camera:

@@ -1,6 +1,8 @@
 #pragma once
 // Embree 3 back end. Embree only builds and walks the BVH over padded float boxes; every surface test is
-// Object::intersect in double precision, so Embree decides which objects to try, never what is hit.
+// Object::intersect in double precision, so Embree decides which objects to try, never what is hit. The
+// exception are meshes of 64+ triangles: native float triangles, each hit redone in double by a filter
+// before Embree may keep it (embree_meshes.hpp).
 // <embree3/rtcore.h> stays in the .cpp (pimpl) so that including this header costs nothing.
 #include <memory>
 #include <vector>

@@ -1,6 +1,7 @@
 #include "snell/geometry/mesh.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -39,18 +40,49 @@ Mesh::Mesh(MeshData data) : data_(std::move(data)) {
   if (data_.inside_vector && length_squared(*data_.inside_vector) == 0)
     throw std::invalid_argument("mesh: inside_vector must not be zero");
 
-  std::vector<Bounds3> boxes(data_.faces.size());
-  for (size_t f = 0; f < data_.faces.size(); ++f) {
-    const auto& face = data_.faces[f];
-    boxes[f] = Bounds3(data_.vertices[face[0]], data_.vertices[face[1]]).unite(data_.vertices[face[2]]);
-  }
-  bvh_ = std::make_unique<MeshBvh>(boxes);
+  for (const auto& face : data_.faces)
+    for (int i : face) bounds_.unite(data_.vertices[i]);
 }
 
 Mesh::~Mesh() = default;
 
 Bounds3 Mesh::bounds() const {
-  return bvh_->bounds();
+  return bounds_;
+}
+
+const MeshBvh& Mesh::bvh() const {
+  std::call_once(bvh_built_, [this] {
+    std::vector<Bounds3> boxes(data_.faces.size());
+    for (size_t f = 0; f < data_.faces.size(); ++f) {
+      const auto& face = data_.faces[f];
+      boxes[f] = Bounds3(data_.vertices[face[0]], data_.vertices[face[1]]).unite(data_.vertices[face[2]]);
+    }
+    bvh_ = std::make_unique<MeshBvh>(boxes);
+  });
+  return *bvh_;
+}
+
+// Moeller and Trumbore 1997 without the edge tests: t and the barycentrics of the ray's crossing with the
+// face's plane.
+std::optional<LocalHit> Mesh::face_hit(int face, const Ray& ray) const {
+  const auto& f = data_.faces[face];
+  const Vec3 &a = data_.vertices[f[0]], &b = data_.vertices[f[1]], &c = data_.vertices[f[2]];
+  const Vec3 e1 = b - a, e2 = c - a;
+  const Vec3 p = cross(ray.direction, e2);
+  const double det = dot(e1, p);
+  if (!(std::abs(det) > 0)) return std::nullopt;
+  const Vec3 s = ray.origin - a;
+  const Vec3 q = cross(s, e1);
+  const double t = dot(e2, q) / det;
+  double b1 = std::clamp(dot(s, p) / det, 0.0, 1.0);
+  double b2 = std::clamp(dot(ray.direction, q) / det, 0.0, 1.0);
+  if (b1 + b2 > 1) {
+    const double sum = b1 + b2;
+    b1 /= sum;
+    b2 /= sum;
+  }
+  if (!std::isfinite(t)) return std::nullopt;
+  return make_hit(face, t, b1, b2);
 }
 
 // mesh2 without normal_indices/uv_indices uses the face indices when the lists are per vertex (POV-Ray
@@ -92,7 +124,7 @@ bool Mesh::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) 
   int best = -1;
   TriangleHit best_hit{};
   double t_far = t_max;
-  bvh_->traverse(ray, t_min, t_far, [&](int face, double& t_limit) {
+  bvh().traverse(ray, t_min, t_far, [&](int face, double& t_limit) {
     const auto& f = data_.faces[face];
     TriangleHit th;
     if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, t_min,
@@ -110,7 +142,7 @@ bool Mesh::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) 
 void Mesh::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
   const size_t first = hits.size();
   double t_far = t_max;
-  bvh_->traverse(ray, t_min, t_far, [&](int face, double&) {
+  bvh().traverse(ray, t_min, t_far, [&](int face, double&) {
     const auto& f = data_.faces[face];
     TriangleHit th;
     if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, t_min,
@@ -128,7 +160,7 @@ bool Mesh::inside(const Vec3& p) const {
   const Ray ray{p, *data_.inside_vector, 0};
   int crossings = 0;
   double t_far = math::kInfinity;
-  bvh_->traverse(ray, 0.0, t_far, [&](int face, double&) {
+  bvh().traverse(ray, 0.0, t_far, [&](int face, double&) {
     const auto& f = data_.faces[face];
     TriangleHit th;
     if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, 0.0,

@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,8 @@ struct MeshData {
 
 /// POV-Ray `mesh`/`mesh2`: triangles under an internal BVH (mesh_bvh.hpp). Hits report the face index in
 /// `LocalHit::part`. Without `inside_vector` a mesh has no interior (POV-Ray: Inside is false).
+/// The BVH is built on the first query: a mesh the Embree back end walks as native triangles (and only
+/// refines with `face_hit`) never needs it, which saves its memory.
 class Mesh final : public Shape {
  public:
   explicit Mesh(MeshData data);
@@ -40,13 +43,20 @@ class Mesh final : public Shape {
 
   const MeshData& data() const { return data_; }
 
+  /// The hit of `ray` with the plane of face `face`, its barycentric coordinates clamped to the triangle:
+  /// how a float hit found by Embree is redone in double precision. nullopt for a ray parallel to the face.
+  std::optional<LocalHit> face_hit(int face, const Ray& ray) const;
+
  private:
   LocalHit make_hit(int face, double t, double b1, double b2) const;
   const std::array<int, 3>* normal_face(int face) const;
   const std::array<int, 3>* uv_face(int face) const;
+  const MeshBvh& bvh() const;
 
   MeshData data_;
-  std::unique_ptr<MeshBvh> bvh_;
+  Bounds3 bounds_;
+  mutable std::once_flag bvh_built_;
+  mutable std::unique_ptr<MeshBvh> bvh_;
 };
 
 }  // namespace snell::geometry

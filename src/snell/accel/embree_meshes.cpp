@@ -1,0 +1,80 @@
+#include "snell/accel/embree_meshes.hpp"
+
+#include <cmath>
+
+namespace snell::accel {
+
+using math::Vec3;
+
+const geometry::Mesh* native_mesh_of(const scene::Object& object, double max_coordinate) {
+  if (object.csg || object.motion || object.bounded_by || object.flags.inverse) return nullptr;
+  const auto* mesh = dynamic_cast<const geometry::Mesh*>(object.shape.get());
+  if (!mesh || mesh->data().faces.size() < kNativeMeshMinFaces) return nullptr;
+  const math::Bounds3 local = mesh->bounds();
+  const math::Bounds3 world = object.transform.bounds(local);
+  const auto in_range = [&](const math::Bounds3& b) {
+    return b.is_finite() && !b.empty() && max_component(math::abs(b.lo)) < max_coordinate &&
+           max_component(math::abs(b.hi)) < max_coordinate;
+  };
+  return in_range(local) && in_range(world) ? mesh : nullptr;
+}
+
+MeshSceneCache::~MeshSceneCache() {
+  for (auto& [mesh, scene] : scenes_) rtcReleaseScene(scene);
+}
+
+RTCScene MeshSceneCache::scene_of(const geometry::Mesh& mesh) {
+  if (const auto found = scenes_.find(&mesh); found != scenes_.end()) return found->second;
+  const geometry::MeshData& data = mesh.data();
+  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), data.vertices.size()));
+  if (vertices) {
+    for (size_t i = 0; i < data.vertices.size(); ++i) {
+      vertices[3 * i] = static_cast<float>(data.vertices[i].x);
+      vertices[3 * i + 1] = static_cast<float>(data.vertices[i].y);
+      vertices[3 * i + 2] = static_cast<float>(data.vertices[i].z);
+    }
+  }
+  // The index triples are shared, not copied (12 bytes a triangle saved): the Mesh checked them to be in
+  // range and outlives the accelerator, as the scene does.
+  static_assert(sizeof(data.faces[0]) == 3 * sizeof(unsigned));
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, data.faces.data(), 0,
+                             3 * sizeof(unsigned), data.faces.size());
+  rtcSetGeometryUserData(geometry, user_data_);
+  rtcSetGeometryIntersectFilterFunction(geometry, filter_);
+  rtcCommitGeometry(geometry);
+  RTCScene scene = rtcNewScene(device_);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  // Medium quality: a high-quality (spatial split) build of ten million triangles costs gigabytes.
+  rtcSetSceneBuildQuality(scene,
+                          data.faces.size() > 1000000 ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene);
+  scenes_.emplace(&mesh, scene);
+  triangles_ += data.faces.size();
+  return scene;
+}
+
+unsigned attach_mesh_instance(RTCDevice device, RTCScene top, RTCScene mesh_scene,
+                              const scene::Object& object) {
+  RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(instance, mesh_scene);
+  // Column-major 3x4: the images of the axes, then of the origin (independent of Matrix4's layout).
+  const Vec3 columns[4] = {object.transform.vector({1, 0, 0}), object.transform.vector({0, 1, 0}),
+                           object.transform.vector({0, 0, 1}), object.transform.point({0, 0, 0})};
+  float matrix[12];
+  for (int c = 0; c < 4; ++c) {
+    matrix[3 * c] = static_cast<float>(columns[c].x);
+    matrix[3 * c + 1] = static_cast<float>(columns[c].y);
+    matrix[3 * c + 2] = static_cast<float>(columns[c].z);
+  }
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, matrix);
+  rtcCommitGeometry(instance);
+  const unsigned id = rtcAttachGeometry(top, instance);
+  rtcReleaseGeometry(instance);
+  return id;
+}
+
+}  // namespace snell::accel

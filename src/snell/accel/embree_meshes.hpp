@@ -1,0 +1,50 @@
+#pragma once
+// Meshes as Embree's native triangles: each distinct mesh becomes one Embree scene of float triangles,
+// placed by an instance per object that uses it (so a mesh placed a thousand times is stored once). Embree
+// then picks the nearest triangle in float; an intersection filter redoes each candidate in double
+// precision (Mesh::face_hit) and accepts it only when it is nearer than the best double hit so far, so
+// hits, normals and textures stay what Object::intersect gives. Included only by embree_accelerator.cpp
+// (it needs <embree3/rtcore.h>).
+#include <embree3/rtcore.h>
+
+#include <unordered_map>
+
+#include "snell/geometry/mesh.hpp"
+#include "snell/scene/object.hpp"
+
+namespace snell::accel {
+
+/// Meshes with fewer faces stay user geometry (their own double-precision BVH): the gain is in memory and
+/// speed of big meshes and of many copies, and small ones keep the exact path.
+inline constexpr size_t kNativeMeshMinFaces = 64;
+
+/// The mesh of a still, non-CSG object without `bounded_by` whose vertices Embree can hold in float, or null.
+const geometry::Mesh* native_mesh_of(const scene::Object& object, double max_coordinate);
+
+/// Embree scenes of float triangles, one per distinct mesh, released with the cache.
+class MeshSceneCache {
+ public:
+  MeshSceneCache(RTCDevice device, void* filter_user_data, RTCFilterFunctionN filter)
+      : device_(device), user_data_(filter_user_data), filter_(filter) {}
+  ~MeshSceneCache();
+  MeshSceneCache(const MeshSceneCache&) = delete;
+  MeshSceneCache& operator=(const MeshSceneCache&) = delete;
+
+  /// The committed scene of `mesh`, built on first use.
+  RTCScene scene_of(const geometry::Mesh& mesh);
+  size_t triangles() const { return triangles_; }
+  size_t meshes() const { return scenes_.size(); }
+
+ private:
+  RTCDevice device_;
+  void* user_data_;
+  RTCFilterFunctionN filter_;
+  std::unordered_map<const geometry::Mesh*, RTCScene> scenes_;
+  size_t triangles_ = 0;
+};
+
+/// Attaches an instance of `mesh_scene` placed by `object`'s transform to `top`; returns its geometry id.
+unsigned attach_mesh_instance(RTCDevice device, RTCScene top, RTCScene mesh_scene,
+                              const scene::Object& object);
+
+}  // namespace snell::accel
