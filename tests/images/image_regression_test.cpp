@@ -63,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(PovRayScenes, ImageRegression,
                          ::testing::Values(Case{"lit_spheres", 0.98}, Case{"mirror_and_glass", 0.98},
                                            Case{"filtered_shadows", 0.98}, Case{"shapes", 0.98},
                                            Case{"lights_and_camera", 0.98}, Case{"blob_metaballs", 0.98},
-                                           Case{"csg_and_patterns", 0.98}),
+                                           Case{"csg_and_patterns", 0.98}, Case{"ovus_parametric", 0.98}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

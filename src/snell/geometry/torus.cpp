@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "snell/geometry/arc_of_revolution.hpp"
 #include "snell/geometry/polynomial.hpp"
 
 namespace snell::geometry {
@@ -50,13 +51,7 @@ void Torus::gather(const Ray& ray, HitBuffer<4>& hits) const {
   const double u_hi = std::min(half * 1.000001, f + hits.t_max() * dl);
   if (!(u_lo < u_hi)) return;
 
-  // (|p|^2 + R^2 - r^2)^2 = 4 R^2 (p_x^2 + p_z^2) with p = o + u dn, |dn| = 1.
-  const double r2 = major_ * major_;
-  const double g = dot(o, dn);
-  const double e = length_squared(o) + r2 - minor_ * minor_;
-  const std::array<double, 5> coeffs{e * e - 4 * r2 * (o.x * o.x + o.z * o.z),
-                                     4 * g * e - 8 * r2 * (o.x * dn.x + o.z * dn.z),
-                                     4 * g * g + 2 * e - 4 * r2 * (dn.x * dn.x + dn.z * dn.z), 4 * g, 1.0};
+  const std::array<double, 5> coeffs = torus_quartic(o, dn, major_, minor_);
   std::array<double, 4> roots{};
   const int n = real_roots(coeffs, u_lo, u_hi, roots);
   for (int i = 0; i < n; ++i) {

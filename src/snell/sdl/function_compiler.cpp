@@ -198,11 +198,16 @@ class FunctionCompiler {
                                                   : "expected a function expression, found '" + t.text + "'");
     }
     const std::string& w = t.text;
-    for (std::size_t i = 0; i < parameters_.size(); ++i) {
-      if (parameters_[i] == w) {
-        p_.raw_next();
-        out_.parameter(static_cast<std::uint32_t>(i));
-        return;
+    // POV-Ray's fncode.cpp keeps x and u (and y and v) in one register, so `u` reads parameter x (the
+    // parametric object's functions are written in u and v).
+    const std::string alias = w == "u" ? "x" : w == "v" ? "y" : w == "x" ? "u" : w == "y" ? "v" : "";
+    for (const std::string& name : {w, alias}) {
+      for (std::size_t i = 0; i < parameters_.size() && !name.empty(); ++i) {
+        if (parameters_[i] == name) {
+          p_.raw_next();
+          out_.parameter(static_cast<std::uint32_t>(i));
+          return;
+        }
       }
     }
     if (const Value* v = p_.lookup(w)) return declared(t, *v);

@@ -46,7 +46,8 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
   if (is_shape_keyword(w) || w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
       w == "blob" || w == "mesh" || w == "mesh2" || w == "light_source" || w == "object" ||
       w == "isosurface" || w == "superellipsoid" || w == "height_field" || w == "bicubic_patch" ||
-      w == "julia_fractal" || w == "lsystem" || w == "particle_system" || w == "boids") {
+      w == "julia_fractal" || w == "lsystem" || w == "particle_system" || w == "boids" || w == "ovus" ||
+      w == "lemon" || w == "parametric") {
     raw_next();
     return parse_object(t);
   }
@@ -58,8 +59,6 @@ std::optional<ParsedObject> Parser::parse_object_if_any() {
       return o;
     }
   }
-  if (w == "parametric" || w == "lemon" || w == "ovus")
-    fail(t.where, "the object '" + w + "' is not supported yet");
   return std::nullopt;
 }
 
@@ -83,6 +82,8 @@ ParsedObject Parser::parse_object(const Token& keyword) {
     o = parse_isosurface(keyword);
   } else if (w == "superellipsoid") {
     o = parse_superellipsoid(keyword);
+  } else if (w == "ovus" || w == "lemon" || w == "parametric") {
+    o = w == "ovus" ? parse_ovus(keyword) : w == "lemon" ? parse_lemon(keyword) : parse_parametric(keyword);
   } else if (w == "height_field") {
     o = parse_height_field(keyword);
   } else if (w == "bicubic_patch") {

@@ -343,6 +343,12 @@ class Parser {
   // procedural_objects.cpp, height_field.cpp
   ParsedObject parse_isosurface(const Token& keyword);
   ParsedObject parse_superellipsoid(const Token& keyword);
+  // curved_shapes.cpp
+  ParsedObject parse_ovus(const Token& keyword);
+  ParsedObject parse_lemon(const Token& keyword);
+  ParsedObject parse_parametric(const Token& keyword);
+  /// `{ box {..} | sphere {..} }` after `contained_by` (isosurface, parametric).
+  std::shared_ptr<const geometry::Shape> parse_contained_by();
   ParsedObject parse_height_field(const Token& keyword);
   /// terrain_block.cpp: reads `diamond_square { }`, `fbm { }`... into `grid`; false when none is next.
   bool parse_terrain_if_any(geometry::HeightGrid& grid);

@@ -198,7 +198,8 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     }
     // POV-Ray's per-pattern defaults (pattern.cpp default maps and waves).
     using E = texture::ColorMap::Entry;
-    if (w == "marble" || w == "wood") b.spec.wave.wave = texture::Wave::triangle;
+    if (w == "marble" || w == "wood" || w == "spiral1" || w == "spiral2")
+      b.spec.wave.wave = texture::Wave::triangle;
     if (w == "marble")
       b.spec.color_map =
           texture::ColorMap({E{0.0, rgb(0.9, 0.8, 0.8)}, E{0.9, rgb(0.9, 0.08, 0.08)}, E{0.9, rgb(0, 0, 0)}});

@@ -65,25 +65,7 @@ ParsedObject Parser::parse_isosurface(const Token& keyword) {
       if (s.function->arity() != 3) fail(t.where, "an isosurface function takes x, y, z");
     } else if (t.is_word("contained_by")) {
       raw_next();
-      expect("{", "contained_by");
-      const Token shape = raw_next();
-      if (shape.is_word("box")) {
-        expect("{", "box");
-        const math::Vec3 a = parse_vector();
-        accept(",");
-        s.container = std::make_shared<geometry::Box>(a, parse_vector());
-      } else if (shape.is_word("sphere")) {
-        expect("{", "sphere");
-        const math::Vec3 c = parse_vector();
-        accept(",");
-        const double r = parse_float();
-        if (!(r > 0)) fail(shape.where, "contained_by sphere needs a positive radius");
-        s.container = std::make_shared<geometry::Sphere>(c, r);
-      } else {
-        fail(shape.where, "contained_by takes a box or a sphere");
-      }
-      expect("}", shape.text.c_str());
-      expect("}", "contained_by");
+      s.container = parse_contained_by();
     } else if (t.is_word("threshold")) {
       raw_next();
       s.threshold = parse_float();
