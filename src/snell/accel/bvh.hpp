@@ -21,8 +21,10 @@ class Bvh final : public Accelerator {
 
   /// Four children per node: the binary SAH tree collapsed (each node opens its largest interior
   /// children until it has four; Wald, Benthin and Boulos, "Getting rid of packets", 2008), so a walk
-  /// fetches half as many nodes. Child boxes are float, rounded outward, and tested in double.
-  struct Node {
+  /// fetches half as many nodes. Child boxes are float, rounded outward, and tested in single
+  /// precision, conservatively (float_slabs.hpp); a node fills two cache lines exactly. Unused slots hold
+  /// FloatBox::nothing(), which no ray enters.
+  struct alignas(64) Node {
     float lo[3][4];
     float hi[3][4];
     /// Interior child: its node index, count 0. Leaf child: first object in `objects_`, count > 0.
@@ -33,14 +35,9 @@ class Bvh final : public Accelerator {
   static constexpr uint32_t kNoChild = UINT32_MAX;
 
  private:
-  /// A subtree waiting to be walked: a node (count 0) or a leaf's objects, entered by the ray at `entry`.
-  /// No default member initialisers: the walk's stack of these must cost nothing to create.
-  struct Pending {
-    uint32_t index;
-    uint32_t count;
-    double entry;
-  };
-  Pending root_{0, 0, 0};
+  /// The root: a node (count 0) or, for a scene of few objects, a single leaf.
+  uint32_t root_index_ = 0;
+  uint32_t root_count_ = 0;
   FloatBox root_box_;
   std::vector<Node> nodes_;
   std::vector<const scene::Object*> objects_;  // in leaf order

@@ -50,4 +50,26 @@ inline void four_slab_tests(const RayBox& ray, const float (&lo)[3][4], const fl
 #endif
 }
 
+/// The double-precision four-box test in the shape of FloatSlabs::test, for the rays FloatSlabs cannot
+/// represent: bit k set when the ray may cross box k, entry[k] where it enters (widened as RayBox::enter).
+class DoubleSlabs {
+ public:
+  using Real = double;
+  explicit DoubleSlabs(const math::Ray& ray) : ray_(ray) {}
+  static double round_down(double v) { return v; }
+  static double round_up(double v) { return v; }
+  int test(const float (&lo)[3][4], const float (&hi)[3][4], double t_min, double t_max,
+           double (&entry)[4]) const {
+    std::array<double, 4> near_t, far_t;
+    four_slab_tests(ray_, lo, hi, t_min, t_max, near_t, far_t);
+    int mask = 0;
+    for (int k = 0; k < 4; ++k)
+      if (RayBox::widened_overlap(near_t[k], far_t[k], entry[k])) mask |= 1 << k;
+    return mask;
+  }
+
+ private:
+  RayBox ray_;
+};
+
 }  // namespace snell::accel

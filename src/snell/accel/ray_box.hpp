@@ -7,6 +7,21 @@
 
 namespace snell::accel {
 
+/// The nearest float not above (below) `v`, for conversions that must stay conservative; beyond float's
+/// range the infinity on that side (NaN: the infinity that makes the result useless as a bound).
+inline float float_below(double v) {
+  constexpr double kFloatMax = std::numeric_limits<float>::max();
+  if (!(std::abs(v) <= kFloatMax)) return v > 0 ? static_cast<float>(kFloatMax) : -INFINITY;
+  const auto f = static_cast<float>(v);
+  return static_cast<double>(f) > v ? std::nextafter(f, -INFINITY) : f;
+}
+inline float float_above(double v) {
+  constexpr double kFloatMax = std::numeric_limits<float>::max();
+  if (!(std::abs(v) <= kFloatMax)) return v < 0 ? -static_cast<float>(kFloatMax) : INFINITY;
+  const auto f = static_cast<float>(v);
+  return static_cast<double>(f) < v ? std::nextafter(f, INFINITY) : f;
+}
+
 /// A box in float, rounded outward so that it contains the double box it was made from: half the memory
 /// of a Bounds3 (more nodes per cache line), still tested in double.
 struct FloatBox {
@@ -14,6 +29,15 @@ struct FloatBox {
   float hi[3] = {0, 0, 0};
 
   FloatBox() = default;
+  /// The box no ray enters: lo = +inf, hi = -inf on every axis.
+  static FloatBox nothing() {
+    FloatBox b;
+    for (int a = 0; a < 3; ++a) {
+      b.lo[a] = INFINITY;
+      b.hi[a] = -INFINITY;
+    }
+    return b;
+  }
   explicit FloatBox(const math::Bounds3& b) {
     constexpr double kFloatMax = std::numeric_limits<float>::max();
     for (int a = 0; a < 3; ++a) {
