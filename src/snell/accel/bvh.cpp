@@ -25,8 +25,8 @@ constexpr double kObjectCost = 4.0;
 // kStackSize (one entry per level) never overflows.
 constexpr int kMaxSahDepth = 64;
 constexpr int kMaxBinaryDepth = kMaxSahDepth + 32;
-// A walk pops one node and pushes at most four children per level.
-constexpr int kStackSize = 3 * kMaxBinaryDepth + 4;
+// A walk pops one node and pushes at most kWidth children per level.
+constexpr int kStackSize = (Bvh::kWidth - 1) * kMaxBinaryDepth + Bvh::kWidth;
 
 /// The binary tree the builder makes before it is collapsed to Bvh::Node.
 struct BinaryNode {
@@ -147,11 +147,11 @@ class Builder {
   std::vector<math::Vec3> centroids_;
 };
 
-/// Appends the four-wide node for binary interior node `b` (and, first, its subtrees); returns its index.
+/// Appends the wide node for binary interior node `b` (and, first, its subtrees); returns its index.
 uint32_t collapse(const std::vector<BinaryNode>& binary, uint32_t b, std::vector<Bvh::Node>& wide) {
-  std::array<uint32_t, 4> members{binary[b].offset, binary[b].offset + 1, 0, 0};
+  std::array<uint32_t, Bvh::kWidth> members{binary[b].offset, binary[b].offset + 1};
   int n = 2;
-  while (n < 4) {
+  while (n < Bvh::kWidth) {
     int open = -1;
     double largest = -1;
     for (int k = 0; k < n; ++k) {
@@ -169,7 +169,7 @@ uint32_t collapse(const std::vector<BinaryNode>& binary, uint32_t b, std::vector
   const auto index = static_cast<uint32_t>(wide.size());
   wide.emplace_back();
   Bvh::Node node{};
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < Bvh::kWidth; ++k) {
     const FloatBox box = k < n ? FloatBox(binary[members[k]].box) : FloatBox::nothing();
     for (int a = 0; a < 3; ++a) {
       node.lo[a][k] = box.lo[a];
@@ -213,7 +213,7 @@ struct Subtree {
   double entry;
 };
 
-/// The nearest-hit walk over the wide nodes, with the four-box test of `Slabs` (FloatSlabs or
+/// The nearest-hit walk over the wide nodes, with the box test of `Slabs` (FloatSlabs or
 /// DoubleSlabs). Children hit are pushed farthest first, so the nearest is walked next; a pending child is
 /// skipped when a hit nearer than its entry has been found meanwhile.
 template <class Slabs>
@@ -250,9 +250,9 @@ bool walk(const Slabs& slabs, const std::vector<Bvh::Node>& nodes,
       continue;
     }
     const Bvh::Node& node = nodes[p.index];
-    Real entry[4];
+    Real entry[Bvh::kWidth];
     int mask = slabs.test(node.lo, node.hi, box_t_min, box_t_max, entry);
-    std::array<Pending, 4> hits;
+    std::array<Pending, Bvh::kWidth> hits;
     int n = 0;
     for (; mask != 0; mask &= mask - 1) {
       const int k = std::countr_zero(static_cast<unsigned>(mask));

@@ -59,15 +59,32 @@ class FloatSlabs {
 
   bool usable() const { return usable_; }
 
+  /// For the BVH walk: distances are floats, and doubles convert to them conservatively.
+  using Real = float;
+  static float round_down(double v) { return float_below(v); }
+  static float round_up(double v) { return float_above(v); }
+
   /// Bit k of the result is set when the ray may cross box k of `lo`/`hi` (corners as [axis][box]) within
   /// [t_min, t_max]; entry[k] is then a lower bound of where it enters.
-  int test(const float (&lo)[3][4], const float (&hi)[3][4], float t_min, float t_max,
-           float (&entry)[4]) const {
+  template <int W>
+  int test(const float (&lo)[3][W], const float (&hi)[3][W], float t_min, float t_max,
+           float (&entry)[W]) const {
+    static_assert(W % 4 == 0, "boxes come in groups of four");
+    int mask = 0;
+    for (int first = 0; first < W; first += 4) mask |= test_four(lo, hi, first, t_min, t_max, entry) << first;
+    return mask;
+  }
+
+ private:
+  /// Boxes first to first + 3.
+  template <int W>
+  int test_four(const float (&lo)[3][W], const float (&hi)[3][W], int first, float t_min, float t_max,
+                float (&entry)[W]) const {
 #if defined(__SSE2__)
     __m128 near = _mm_set1_ps(t_min), far = _mm_set1_ps(t_max);
     for (int a = 0; a < 3; ++a) {
-      const __m128 near_plane = _mm_load_ps(near_row_[a] ? hi[a] : lo[a]);
-      const __m128 far_plane = _mm_load_ps(near_row_[a] ? lo[a] : hi[a]);
+      const __m128 near_plane = _mm_load_ps((near_row_[a] ? hi[a] : lo[a]) + first);
+      const __m128 far_plane = _mm_load_ps((near_row_[a] ? lo[a] : hi[a]) + first);
       const __m128 inverse = _mm_set1_ps(inverse_[a]);
       // maxps(x, y) is x > y ? x : y, so a NaN distance (0 * inf: the origin on a slab plane of a ray
       // parallel to it) leaves the interval as it was; likewise minps.
@@ -77,12 +94,12 @@ class FloatSlabs {
     const __m128 sign = _mm_set1_ps(-0.0f), slack = _mm_set1_ps(kRelativeSlack);
     near = _mm_sub_ps(near, _mm_mul_ps(_mm_andnot_ps(sign, near), slack));
     far = _mm_add_ps(far, _mm_mul_ps(_mm_andnot_ps(sign, far), slack));
-    _mm_storeu_ps(entry, near);
+    _mm_storeu_ps(entry + first, near);
     // An infinite end widened by infinity is NaN, which fails the comparison: such a box is truly missed.
     return _mm_movemask_ps(_mm_cmple_ps(near, far));
 #else
     int mask = 0;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = first; k < first + 4; ++k) {
       float near = t_min, far = t_max;
       for (int a = 0; a < 3; ++a) {
         const float tn = ((near_row_[a] ? hi[a][k] : lo[a][k]) - near_origin_[a]) * inverse_[a];
@@ -93,22 +110,12 @@ class FloatSlabs {
       near -= std::abs(near) * kRelativeSlack;
       far += std::abs(far) * kRelativeSlack;
       entry[k] = near;
-      if (near <= far) mask |= 1 << k;
+      if (near <= far) mask |= 1 << (k - first);
     }
     return mask;
 #endif
   }
 
-  /// For the BVH walk: distances are floats, and doubles convert to them conservatively.
-  using Real = float;
-  static float round_down(double v) {
-    return float_below(v);
-  }
-  static float round_up(double v) {
-    return float_above(v);
-  }
-
- private:
   float near_origin_[3] = {};
   float far_origin_[3] = {};
   float inverse_[3] = {};
