@@ -262,7 +262,10 @@ bool walk(const Slabs& slabs, const std::vector<Bvh::Node>& nodes,
       for (; j > 0 && hits[j - 1].entry < entry[k]; --j) hits[j] = hits[j - 1];
       hits[j] = {node.child[k], node.count[k], entry[k]};
     }
-    for (int k = 0; k < n; ++k) stack[top++] = hits[k];
+    // All kWidth slots are copied (a fixed-size copy the compiler inlines; a loop of n became a memcpy
+    // call), only n of them are kept; kStackSize leaves room for the rest.
+    std::copy(hits.begin(), hits.end(), stack.begin() + top);
+    top += n;
   }
   return found;
 }
@@ -273,8 +276,9 @@ bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::Ray
                     scene::SurfaceHit& hit) const {
   bool found = test_all(unbounded_, ray, t_min, t_max, kind, hit);
   if (objects_.empty() || !(t_min < t_max)) return found;
-  double entry, exit;
-  if (!RayBox(ray).enter(root_box_, t_min, t_max, entry, exit)) return found;
+  // A root node's children are tested by the walk itself; only a root leaf needs its box tested here.
+  double entry = t_min, exit;
+  if (root_count_ > 0 && !RayBox(ray).enter(root_box_, t_min, t_max, entry, exit)) return found;
   // Single precision where the ray allows it (half the arithmetic of the double test, four boxes per
   // instruction), else double.
   const FloatSlabs float_slabs(ray);
