@@ -9,6 +9,7 @@
 
 #include "snell/accel/accelerator.hpp"
 #include "snell/accel/object_test_counter.hpp"
+#include "snell/accel/query_cost.hpp"
 #include "snell/geometry/sphere.hpp"
 #include "snell/math/pcg32.hpp"
 
@@ -72,11 +73,16 @@ void run(benchmark::State& state, const char* kind, bool coherent) {
   // Work per ray, from one more pass with the counter on (kept out of the timed loop: it costs an atomic).
   accel::ObjectTestCounter::tests = 0;
   accel::ObjectTestCounter::enabled = true;
+  accel::QueryCost cost;
+  accel::t_query_cost = &cost;
   for (const math::Ray& ray : rays) {
     scene::SurfaceHit hit;
     accel->intersect(ray, 1e-6, math::kInfinity, scene::RayKind::camera, hit);
   }
+  accel::t_query_cost = nullptr;
   accel::ObjectTestCounter::enabled = false;
+  state.counters["nodes/ray"] = static_cast<double>(cost.nodes) / static_cast<double>(rays.size());
+  state.counters["node_KiB"] = static_cast<double>(accel->stats().memory_bytes) / 1024.0;
   state.counters["tests/ray"] =
       static_cast<double>(accel::ObjectTestCounter::tests.load()) / static_cast<double>(rays.size());
   state.counters["rays/s"] =

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <chrono>
 #include <numeric>
 
+#include "snell/accel/float_slabs.hpp"
 #include "snell/accel/four_boxes.hpp"
 #include "snell/accel/indexed_objects.hpp"
 #include "snell/accel/ray_box.hpp"
@@ -23,8 +25,8 @@ constexpr double kObjectCost = 4.0;
 // kStackSize (one entry per level) never overflows.
 constexpr int kMaxSahDepth = 64;
 constexpr int kMaxBinaryDepth = kMaxSahDepth + 32;
-// A walk pops one node and pushes at most four children per level.
-constexpr int kStackSize = 3 * kMaxBinaryDepth + 4;
+// A walk pops one node and pushes at most kWidth children per level.
+constexpr int kStackSize = (Bvh::kWidth - 1) * kMaxBinaryDepth + Bvh::kWidth;
 
 /// The binary tree the builder makes before it is collapsed to Bvh::Node.
 struct BinaryNode {
@@ -145,11 +147,11 @@ class Builder {
   std::vector<math::Vec3> centroids_;
 };
 
-/// Appends the four-wide node for binary interior node `b` (and, first, its subtrees); returns its index.
+/// Appends the wide node for binary interior node `b` (and, first, its subtrees); returns its index.
 uint32_t collapse(const std::vector<BinaryNode>& binary, uint32_t b, std::vector<Bvh::Node>& wide) {
-  std::array<uint32_t, 4> members{binary[b].offset, binary[b].offset + 1, 0, 0};
+  std::array<uint32_t, Bvh::kWidth> members{binary[b].offset, binary[b].offset + 1};
   int n = 2;
-  while (n < 4) {
+  while (n < Bvh::kWidth) {
     int open = -1;
     double largest = -1;
     for (int k = 0; k < n; ++k) {
@@ -167,8 +169,8 @@ uint32_t collapse(const std::vector<BinaryNode>& binary, uint32_t b, std::vector
   const auto index = static_cast<uint32_t>(wide.size());
   wide.emplace_back();
   Bvh::Node node{};
-  for (int k = 0; k < 4; ++k) {
-    const FloatBox box = k < n ? FloatBox(binary[members[k]].box) : FloatBox();
+  for (int k = 0; k < Bvh::kWidth; ++k) {
+    const FloatBox box = k < n ? FloatBox(binary[members[k]].box) : FloatBox::nothing();
     for (int a = 0; a < 3; ++a) {
       node.lo[a][k] = box.lo[a];
       node.hi[a][k] = box.hi[a];
@@ -194,57 +196,97 @@ Bvh::Bvh(const scene::Scene& scene) {
   unbounded_ = indexed.unbounded;
   if (!binary.empty()) {
     root_box_ = FloatBox(binary[0].box);
-    root_ = binary[0].count > 0 ? Pending{binary[0].offset, binary[0].count, 0}
-                                : Pending{collapse(binary, 0, nodes_), 0, 0};
+    root_count_ = binary[0].count;
+    root_index_ = root_count_ > 0 ? binary[0].offset : collapse(binary, 0, nodes_);
   }
   nodes_.shrink_to_fit();
   stats_ = structure_stats(scene.objects.size(), unbounded_.size(), nodes_.size(),
                            nodes_.size() * sizeof(Node) + objects_.size() * sizeof(objects_[0]), start);
 }
 
-bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
-                    scene::SurfaceHit& hit) const {
-  bool found = test_all(unbounded_, ray, t_min, t_max, kind, hit);
-  if (objects_.empty() || !(t_min < t_max)) return found;
-  const RayBox slabs(ray);
+namespace {
+
+/// The root of the walk: a node (count 0) or a single leaf, and where the ray enters its box.
+struct Subtree {
+  uint32_t index;
+  uint32_t count;
+  double entry;
+};
+
+/// The nearest-hit walk over the wide nodes, with the box test of `Slabs` (FloatSlabs or
+/// DoubleSlabs). Children hit are pushed farthest first, so the nearest is walked next; a pending child is
+/// skipped when a hit nearer than its entry has been found meanwhile.
+template <class Slabs>
+bool walk(const Slabs& slabs, const std::vector<Bvh::Node>& nodes,
+          const std::vector<const scene::Object*>& objects, const Subtree& root, const math::Ray& ray,
+          double t_min, double t_max, scene::RayKind kind, scene::SurfaceHit& hit) {
+  using Real = typename Slabs::Real;
+  /// A subtree waiting to be walked: a node (count 0) or a leaf's objects (count > 0), entered at `entry`.
+  /// No default member initialisers: the stack of these must cost nothing to create.
+  struct Pending {
+    uint32_t index;
+    uint32_t count;
+    Real entry;
+  };
+  bool found = false;
+  const Real box_t_min = Slabs::round_down(t_min);
+  Real box_t_max = Slabs::round_up(t_max);
   NodeTally tally;
-  double exit;
   std::array<Pending, kStackSize> stack;
-  int top = 0;
-  stack[top] = root_;
-  if (!slabs.enter(root_box_, t_min, t_max, stack[top].entry, exit)) return found;
-  ++top;
-  // Children hit are pushed farthest first, so the nearest is walked next; a pending child is skipped
-  // when a hit nearer than its entry has been found meanwhile.
+  stack[0] = {root.index, root.count, Slabs::round_down(root.entry)};
+  int top = 1;
   while (top > 0) {
     const Pending p = stack[--top];
     if (p.entry > t_max) continue;
     tally.visit();
     if (p.count > 0) {
       for (uint32_t i = p.index; i < p.index + p.count; ++i) {
-        if (test_object(*objects_[i], ray, t_min, t_max, kind, hit)) {
+        if (test_object(*objects[i], ray, t_min, t_max, kind, hit)) {
           t_max = hit.t;
+          box_t_max = Slabs::round_up(t_max);
           found = true;
         }
       }
       continue;
     }
-    const Node& node = nodes_[p.index];
-    std::array<double, 4> near_t, far_t;
-    four_slab_tests(slabs, node.lo, node.hi, t_min, t_max, near_t, far_t);
-    std::array<Pending, 4> hits;
+    const Bvh::Node& node = nodes[p.index];
+    Real entry[Bvh::kWidth];
+    int mask = slabs.test(node.lo, node.hi, box_t_min, box_t_max, entry);
+    std::array<Pending, Bvh::kWidth> hits;
     int n = 0;
-    for (int k = 0; k < 4; ++k) {
-      double entry;
-      if (node.child[k] == kNoChild || !RayBox::widened_overlap(near_t[k], far_t[k], entry)) continue;
+    for (; mask != 0; mask &= mask - 1) {
+      const int k = std::countr_zero(static_cast<unsigned>(mask));
+      if (node.child[k] == Bvh::kNoChild) continue;
       // Insertion by decreasing entry.
       int j = n++;
-      for (; j > 0 && hits[j - 1].entry < entry; --j) hits[j] = hits[j - 1];
-      hits[j] = {node.child[k], node.count[k], entry};
+      for (; j > 0 && hits[j - 1].entry < entry[k]; --j) hits[j] = hits[j - 1];
+      hits[j] = {node.child[k], node.count[k], entry[k]};
     }
-    for (int k = 0; k < n; ++k) stack[top++] = hits[k];
+    // All kWidth slots are copied (a fixed-size copy the compiler inlines; a loop of n became a memcpy
+    // call), only n of them are kept; kStackSize leaves room for the rest.
+    std::copy(hits.begin(), hits.end(), stack.begin() + top);
+    top += n;
   }
   return found;
+}
+
+}  // namespace
+
+bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
+                    scene::SurfaceHit& hit) const {
+  bool found = test_all(unbounded_, ray, t_min, t_max, kind, hit);
+  if (objects_.empty() || !(t_min < t_max)) return found;
+  // A root node's children are tested by the walk itself; only a root leaf needs its box tested here.
+  double entry = t_min, exit;
+  if (root_count_ > 0 && !RayBox(ray).enter(root_box_, t_min, t_max, entry, exit)) return found;
+  // Single precision where the ray allows it (half the arithmetic of the double test, four boxes per
+  // instruction), else double.
+  const FloatSlabs float_slabs(ray);
+  const Subtree root{root_index_, root_count_, entry};
+  const bool walked_hit = float_slabs.usable()
+                              ? walk(float_slabs, nodes_, objects_, root, ray, t_min, t_max, kind, hit)
+                              : walk(DoubleSlabs(ray), nodes_, objects_, root, ray, t_min, t_max, kind, hit);
+  return walked_hit || found;
 }
 
 }  // namespace snell::accel

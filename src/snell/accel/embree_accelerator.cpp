@@ -4,6 +4,7 @@
 
 #include "snell/accel/embree_meshes.hpp"
 #include "snell/accel/indexed_objects.hpp"
+#include "snell/accel/ray_box.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -22,15 +23,9 @@ using math::Vec3;
 
 constexpr double kMaxEmbreeCoordinate = 1e18;
 
-/// Nearest float not above (below) `v`, so that float boxes always contain the double ones.
-float round_down(double v) {
-  const auto f = static_cast<float>(v);
-  return static_cast<double>(f) > v ? std::nextafter(f, -INFINITY) : f;
-}
-float round_up(double v) {
-  const auto f = static_cast<float>(v);
-  return static_cast<double>(f) < v ? std::nextafter(f, INFINITY) : f;
-}
+// Float boxes always contain the double ones: corners rounded outward (ray_box.hpp).
+constexpr auto round_down = float_below;
+constexpr auto round_up = float_above;
 
 /// Per-query data for the callbacks: a struct beginning with RTCIntersectContext, passed to rtcIntersect1
 /// and cast back in the callback; the Embree 3 manual (rtcInitIntersectContext) documents this extension.

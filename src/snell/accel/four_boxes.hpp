@@ -50,4 +50,36 @@ inline void four_slab_tests(const RayBox& ray, const float (&lo)[3][4], const fl
 #endif
 }
 
+/// The double-precision four-box test in the shape of FloatSlabs::test, for the rays FloatSlabs cannot
+/// represent: bit k set when the ray may cross box k, entry[k] where it enters (widened as RayBox::enter).
+class DoubleSlabs {
+ public:
+  using Real = double;
+  explicit DoubleSlabs(const math::Ray& ray) : ray_(ray) {}
+  static double round_down(double v) { return v; }
+  static double round_up(double v) { return v; }
+  template <int W>
+  int test(const float (&lo)[3][W], const float (&hi)[3][W], double t_min, double t_max,
+           double (&entry)[W]) const {
+    int mask = 0;
+    for (int first = 0; first < W; first += 4) {
+      // This path is rare (see FloatSlabs::usable): copying each group of four costs nothing measurable.
+      float group_lo[3][4], group_hi[3][4];
+      for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < 4; ++k) {
+          group_lo[a][k] = lo[a][first + k];
+          group_hi[a][k] = hi[a][first + k];
+        }
+      std::array<double, 4> near_t, far_t;
+      four_slab_tests(ray_, group_lo, group_hi, t_min, t_max, near_t, far_t);
+      for (int k = 0; k < 4; ++k)
+        if (RayBox::widened_overlap(near_t[k], far_t[k], entry[first + k])) mask |= 1 << (first + k);
+    }
+    return mask;
+  }
+
+ private:
+  RayBox ray_;
+};
+
 }  // namespace snell::accel

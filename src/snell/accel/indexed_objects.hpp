@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
-#include "snell/accel/query_cost.hpp"
 #include "snell/accel/object_test_counter.hpp"
+#include "snell/accel/query_cost.hpp"
 
 #include "snell/math/bounds.hpp"
 #include "snell/scene/scene.hpp"
