@@ -3,6 +3,8 @@
 //   texture { checker texture { T_A } texture { T_B } }
 // The pattern is read as in a pigment (pigment_builder.hpp); transforms in the block move the whole
 // texture, entries included (they are applied to the texture itself in materials.cpp).
+#include <utility>
+
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
 #include "snell/texture/object_pattern.hpp"
@@ -63,6 +65,9 @@ bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
       if (!layers) fail(at.where, "tiles needs a texture {} for each tile");
       b.blocks.push_back(layers);
     }
+    // POV-Ray's Parse_Tiles puts the first texture on the odd checker cells and tile2 on the even
+    // ones ("first tile is 1, 2nd tile is 0 to keep compatible with old tiles").
+    std::swap(b.blocks[0], b.blocks[1]);
     expect("}", "tiles");
     return true;
   }
