@@ -2,7 +2,8 @@
 # Builds one libFuzzer target (clang, ASan+UBSan) and runs it.
 # Usage: tools/fuzz.sh [TARGET=parse] [SECONDS=600] [--jobs N] [--build DIR]
 # TARGET: parse (the scene language), png (height field and image map PNG readers), image (TGA, PPM, GIF
-# and JPEG through the OpenImageIO plugin), resume (resume files). See docs/fuzzing.md.
+# and JPEG through the OpenImageIO plugin), resume (resume files), df3 (density files), mesh (model files
+# through io::import_mesh: Assimp and the binary PLY reader). See docs/fuzzing.md.
 # New inputs go to build-fuzz/corpus[-TARGET] (fuzz/corpus holds the seeds and stays untouched); crashes,
 # leaks, timeouts and out-of-memory inputs are written to build-fuzz/artifacts[-TARGET]/. Add each
 # reproducer to the target's regressions/ folder once fixed: tests/fuzz replays it in every build.
@@ -10,11 +11,11 @@ set -euo pipefail
 target=parse seconds=600 jobs=1 build=build-fuzz
 while (($#)); do
   case $1 in
-    parse | png | image | resume) target=$1; shift ;;
+    parse | png | image | resume | df3 | mesh) target=$1; shift ;;
     --jobs) jobs=$2; shift 2 ;;
     --build) build=$2; shift 2 ;;
     [0-9]*) seconds=$1; shift ;;
-    *) echo "usage: $0 [parse|png|image|resume] [SECONDS] [--jobs N] [--build DIR]" >&2; exit 2 ;;
+    *) echo "usage: $0 [parse|png|image|resume|df3|mesh] [SECONDS] [--jobs N] [--build DIR]" >&2; exit 2 ;;
   esac
 done
 root=$(cd "$(dirname "$0")/.." && pwd)

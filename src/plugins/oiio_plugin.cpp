@@ -66,16 +66,22 @@ extern "C" __attribute__((visibility("default"))) int snell_oiio_write_channels(
   return 0;
 }
 
-extern "C" __attribute__((visibility("default"))) int snell_oiio_read(const char* path, int* width,
-                                                                      int* height, int* file_channels,
-                                                                      float** pixels, char* error,
-                                                                      size_t error_size) {
+extern "C" __attribute__((visibility("default"))) int snell_oiio_read(const char* path, const char* format,
+                                                                      int* width, int* height,
+                                                                      int* file_channels, float** pixels,
+                                                                      char* error, size_t error_size) {
   // Keep colours as stored (not multiplied by alpha), which is what image maps and merges expect.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path, &config);
+  // Only the named format's reader: ImageInput::open would try every other reader on a file this one
+  // refuses (snell/io/image_format.hpp). create() without opening does not probe.
+  auto in = OIIO::ImageInput::create(format);
   if (!in) return fail(OIIO::geterror(), error, error_size);
-  const OIIO::ImageSpec& spec = in->spec();
+  OIIO::ImageSpec spec;
+  if (!in->open(path, spec, config)) {
+    const std::string why = in->geterror();
+    return fail(why.empty() ? std::string("not a readable ") + format + " file" : why, error, error_size);
+  }
   const int channels = spec.nchannels;
   if (spec.width <= 0 || spec.height <= 0 || channels <= 0) return fail("empty image", error, error_size);
   const size_t count = static_cast<size_t>(spec.width) * spec.height;

@@ -21,7 +21,7 @@ TEST(PngReaderTest, MatchesOpenImageIoOnPovRayIncludeImages) {
     int width = 0, height = 0, channels = 0;
     float* pixels = nullptr;
     char why[256] = {};
-    ASSERT_EQ(oiio.read(path.c_str(), &width, &height, &channels, &pixels, why, sizeof why), 0) << why;
+    ASSERT_EQ(oiio.read(path.c_str(), "png", &width, &height, &channels, &pixels, why, sizeof why), 0) << why;
     ASSERT_EQ(ours->width, width) << name;
     ASSERT_EQ(ours->height, height) << name;
     EXPECT_EQ(ours->has_alpha(), channels == 2 || channels == 4) << name;

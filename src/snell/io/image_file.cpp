@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "snell/io/image_backend.hpp"
+#include "snell/io/image_format.hpp"
 #include "snell/io/png_reader.hpp"
 #include "snell/io/png_writer.hpp"
 
@@ -115,11 +116,20 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
 
 Image read_image(const fs::path& path) {
   if (std::optional<Image> png = read_png(path)) return std::move(*png);  // no plugin to load for PNG
+  const ImageFileHeader header = read_image_header(path);
+  const std::string& format = header.format;
+  if (format.empty())
+    throw ImageIoError("cannot read '" + path.string() +
+                       "': not an image format snell knows by its first bytes or its extension");
+  if (header.claimed_pixels > kMaxClaimedPixels)
+    throw ImageIoError("cannot read '" + path.string() + "': its header claims " +
+                       std::to_string(header.claimed_pixels) + " pixels, more than the " +
+                       std::to_string(kMaxClaimedPixels) + " snell accepts");
   const ImageBackend& backend = image_backend();
   int width = 0, height = 0, channels = 0;
   float* pixels = nullptr;
   char why[512] = {};
-  if (backend.read(path.c_str(), &width, &height, &channels, &pixels, why, sizeof why) != 0)
+  if (backend.read(path.c_str(), format.c_str(), &width, &height, &channels, &pixels, why, sizeof why) != 0)
     throw ImageIoError("cannot read '" + path.string() + "': " + why);
   Image image(width, height);
   const bool has_alpha = channels == 2 || channels >= 4;

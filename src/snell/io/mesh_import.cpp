@@ -18,6 +18,18 @@
 #include <limits>
 #include <sstream>
 
+// Debian's Assimp 5.2 is built with its internal assertions on, and a failed one prints a line and calls
+// abort(): the mesh fuzz target found damaged OBJ files that end so inside the triangulation step
+// (fuzz/corpus/mesh/regressions/). That version has no way to install an assertion handler, so snell
+// supplies the library's own hook, which the dynamic linker binds in place of Assimp's copy: a failed check
+// becomes an exception that unwinds out of Importer::ReadFile into import_mesh's error path.
+namespace Assimp {
+void aiAssertViolation(const char* failed_expression, const char* file, int line) {
+  throw snell::io::MeshImportError(std::string("the importer's consistency check '") + failed_expression +
+                                   "' failed (" + file + ":" + std::to_string(line) + "): a damaged file");
+}
+}  // namespace Assimp
+
 namespace snell::io {
 namespace {
 

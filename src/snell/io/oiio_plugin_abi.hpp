@@ -17,9 +17,10 @@ using SnellOiioWrite = int (*)(const char* path, int width, int height, int chan
                                const void* pixels, int srgb_tag, char* error, size_t error_size);
 /// Reads an image as interleaved float RGBA (grey replicated; alpha 1 where the file has none) into a buffer
 /// from malloc that the caller frees with the plugin's SnellOiioFree. `*file_channels` receives the file's
-/// own channel count. Returns 0 on success.
-using SnellOiioRead = int (*)(const char* path, int* width, int* height, int* file_channels, float** pixels,
-                              char* error, size_t error_size);
+/// own channel count. `format` names the one OpenImageIO reader to use ("jpeg", "targa": see
+/// snell/io/image_format.hpp); no other reader is tried. Returns 0 on success.
+using SnellOiioRead = int (*)(const char* path, const char* format, int* width, int* height,
+                              int* file_channels, float** pixels, char* error, size_t error_size);
 using SnellOiioFree = void (*)(float* pixels);
 /// Writes `channels` float channels per pixel, named by `names` ("R", "depth.Z": OpenEXR's layer.channel
 /// names), to a multi-layer EXR at `path`. Returns 0 on success.

@@ -1,0 +1,7 @@
+// libFuzzer program for read_df3_bytes (file_fuzzers.hpp); tools/fuzz.sh df3 builds and runs it.
+#include "fuzz/file_fuzzers.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  snell::fuzz::read_df3_bytes(data, size);
+  return 0;
+}
