@@ -272,8 +272,9 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   }
   if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
   if (caustics_ && (f.diffuse != 0 || f.specular != 0 || f.phong != 0))
-    result += caustics_->radiance(*object, sp.point, sp.raw_normal, sp.normal,
-                                  [&](const Vec3& dir, const Color& c) { return surface_response(sp, dir, c); });
+    result +=
+        caustics_->radiance(*object, sp.point, sp.raw_normal, sp.normal,
+                            [&](const Vec3& dir, const Color& c) { return surface_response(sp, dir, c); });
   if (f.subsurface) result += subsurface_light(sp, object, relative_ior, context);
 
   // Light through the surface (trace.cpp: filCol, trans).
