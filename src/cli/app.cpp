@@ -328,6 +328,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
     if (a.mesh_instances > 0)
       fmt::print(stderr, "  accel: {} mesh instances of {} native triangles\n", a.mesh_instances,
                  a.native_triangles);
+    if (!result.integrator_statistics.empty()) fmt::print(stderr, "{}\n", result.integrator_statistics);
   }
   if (preview) preview->finish(o.display_snapshot, o.pause_when_done, &g_interrupted);
   if (result.cancelled) {

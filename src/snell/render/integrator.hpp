@@ -2,6 +2,7 @@
 // An Integrator turns a camera ray into a colour. Implementations: `whitted` (POV-Ray 3.7 compatible);
 // `path` comes later. They read the immutable scene and accelerator; all mutable state is in TraceContext.
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "snell/accel/accelerator.hpp"
@@ -36,6 +37,8 @@ class Integrator {
   virtual math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context,
                                        double max_distance = math::kInfinity) const = 0;
   virtual std::string_view name() const = 0;
+  /// Lines for --stats about work done before rendering (the photon map); empty when none.
+  virtual std::string statistics() const { return {}; }
 };
 
 /// `name` is "whitted". Throws std::invalid_argument for unknown names. Scene and accelerator must outlive

@@ -331,6 +331,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
   stats.supersampled_pixels = supersampled;
   stats.tiles_rendered = tiles_done;
   stats.cancelled = stopped;
+  stats.integrator_statistics = integrator->statistics();
   return stats;
 }
 

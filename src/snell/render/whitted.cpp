@@ -99,6 +99,7 @@ WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Acc
     if (object->interior && !object->interior->media.empty()) has_interior_media_ = true;
   has_atmosphere_ = has_interior_media_ || !scene.fogs.empty() || !scene.atmosphere.empty();
   if (has_atmosphere_) camera_inside_ = containing(scene.camera.location);
+  caustics_ = photons::make_caustics(scene, accelerator);
 }
 
 Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context, double max_distance) const {
@@ -175,7 +176,7 @@ Color WhittedIntegrator::shadowed(const scene::Light& light, const Vec3& point, 
                        &light);
   if (!light.projected_through.empty() && !crosses_projection(light, point, toward, context.time))
     return Color(0);
-  Color c = shadow_filter(point, normal, toward.direction, toward.distance, colour, context);
+  Color c = shadow_filter(point, normal, toward.direction, toward.distance, colour, context, &light);
   // `media_attenuation`: the atmosphere's media and fog thin the light on its way (trace.cpp,
   // TraceShadowRay and ComputeShadowMedia; fog adds no colour to a shadow ray).
   if (light.media_attenuation && max_abs(c) >= kEpsilon) {
@@ -270,6 +271,10 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
     result += pc.rgb * gathered * (f.diffuse * sp.opacity);
   }
   if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
+  if (caustics_ && (f.diffuse != 0 || f.specular != 0 || f.phong != 0))
+    result +=
+        caustics_->radiance(*object, sp.point, sp.raw_normal, sp.normal,
+                            [&](const Vec3& dir, const Color& c) { return surface_response(sp, dir, c); });
   if (f.subsurface) result += subsurface_light(sp, object, relative_ior, context);
 
   // Light through the surface (trace.cpp: filCol, trans).
@@ -503,7 +508,8 @@ Color WhittedIntegrator::subsurface_light(const ShadingPoint& sp, const scene::O
 }
 
 Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, const Vec3& dir,
-                                       double distance, Color light, TraceContext& context) const {
+                                       double distance, Color light, TraceContext& context,
+                                       const scene::Light* source) const {
   // Start on the side of the surface the light is on, so a surface never shadows itself.
   Vec3 origin = offset_origin(point, dot(normal, dir) >= 0 ? normal : -normal);
   double remaining = distance - dot(origin - point, dir);
@@ -516,6 +522,8 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     const material::Rgbft c = pigment_at(hit);
     if (context.observer) context.observer->shadow_blocker(hit, !c.is_transparent());
     if (!c.is_transparent()) return Color(0);
+    if (caustics_ && source && caustics_->replaces_shadow(*source, hit.solid ? *hit.solid : *hit.object))
+      return Color(0);
     light *= transmitted_color(c);
     if (max_abs(light) < scene_.settings.adc_bailout) return Color(0);
     const Vec3 side = dot(hit.normal, dir) >= 0 ? hit.normal : -hit.normal;

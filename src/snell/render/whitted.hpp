@@ -3,13 +3,14 @@
 // functions it calls), rewritten for snell's scene model: ambient/emission, diffuse with brilliance, phong,
 // specular, metallic highlights, reflection (min/max, fresnel, falloff, exponent, metallic), refraction
 // with total internal reflection, filter/transmit and filtered shadows, termination by max_trace_level
-// and adc_bailout. Area lights with POV-Ray's adaptive grid; photons come later.
+// and adc_bailout. Area lights with POV-Ray's adaptive grid; caustics from a photon map.
 #include <memory>
 #include <vector>
 
 #include "snell/render/integrator.hpp"
 #include "snell/render/interior_stack.hpp"
 #include "snell/render/light_ray.hpp"
+#include "snell/render/photons/caustics.hpp"
 #include "snell/render/radiosity/hemisphere_gather.hpp"
 
 namespace snell::render {
@@ -21,6 +22,7 @@ class WhittedIntegrator final : public Integrator {
   math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context,
                                double max_distance = math::kInfinity) const override;
   std::string_view name() const override { return "whitted"; }
+  std::string statistics() const override { return caustics_ ? caustics_->summary() : std::string(); }
 
   /// Colour seen along `ray` (unit direction) at recursion `level` (camera rays are level 1), with the
   /// ray's contribution `weight` to the pixel: black past max_trace_level or below adc_bailout.
@@ -53,7 +55,8 @@ class WhittedIntegrator final : public Integrator {
                        const LightRay& toward, const math::Color& colour, TraceContext& context) const;
   /// Light reaching `point` from direction `dir` within `distance`, tinted by transparent blockers.
   math::Color shadow_filter(const math::Vec3& point, const math::Vec3& normal, const math::Vec3& dir,
-                            double distance, math::Color light, TraceContext& context) const;
+                            double distance, math::Color light, TraceContext& context,
+                            const scene::Light* source = nullptr) const;
   /// Mirror reflection, or glossy reflection when the finish has `blur`.
   math::Color reflect(const ShadingPoint& sp, int level, double weight, const InteriorStack& inside,
                       TraceContext& context) const;
@@ -76,6 +79,8 @@ class WhittedIntegrator final : public Integrator {
   InteriorStack camera_inside_;
   /// Set when the scene has `radiosity {}`: it then replaces the ambient term.
   std::unique_ptr<radiosity::HemisphereGather> radiosity_;
+  /// Set when the scene has `photons {}`: the caustic photon map (render/photons/caustics.hpp).
+  std::unique_ptr<photons::Caustics> caustics_;
 };
 
 /// Origin for a ray leaving surface point `p` towards the side `side` points to: moved off the surface by

@@ -5,6 +5,7 @@
 #include "snell/math/color.hpp"
 #include "snell/math/vec3.hpp"
 #include "snell/scene/object.hpp"
+#include "snell/scene/photon_settings.hpp"
 
 namespace snell::scene {
 
@@ -36,6 +37,8 @@ struct Light {
   /// `projected_through { object }`: light reaches only the points whose ray to the light crosses one of
   /// these (the object itself is not drawn).
   std::vector<std::shared_ptr<const Object>> projected_through;
+  /// `photons {}` in the light (scene/photon_settings.hpp).
+  LightPhotons photons;
 };
 
 }  // namespace snell::scene

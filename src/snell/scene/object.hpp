@@ -11,6 +11,7 @@
 #include "snell/material/texture.hpp"
 #include "snell/math/transform.hpp"
 #include "snell/scene/motion.hpp"
+#include "snell/scene/photon_settings.hpp"
 #include "snell/scene/source_location.hpp"
 
 namespace snell::scene {
@@ -28,6 +29,8 @@ struct ObjectFlags {
   bool hollow = false;
   bool inverse = false;
   bool double_illuminate = false;
+  /// `photons {}` in the object (scene/photon_settings.hpp).
+  ObjectPhotons photons;
 };
 
 struct Object;

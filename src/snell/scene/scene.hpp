@@ -16,6 +16,7 @@
 #include "snell/scene/fog.hpp"
 #include "snell/scene/light.hpp"
 #include "snell/scene/object.hpp"
+#include "snell/scene/photon_settings.hpp"
 #include "snell/scene/radiosity_settings.hpp"
 
 namespace snell::scene {
@@ -29,6 +30,8 @@ struct GlobalSettings {
   math::Color ambient_light{1};
   /// `radiosity {}`: indirect diffuse light replaces the ambient term (POV-Ray 3.7 semantics).
   std::optional<RadiositySettings> radiosity;
+  /// `photons {}`: caustics by photon mapping (render/photons/).
+  std::optional<PhotonSettings> photons;
   /// `#version` in effect at the end of parsing (POV-Ray uses it for version-dependent defaults).
   double language_version = 3.7;
   /// `mm_per_unit` (default 10) and `subsurface { samples N, M }`: the scale of subsurface scattering and

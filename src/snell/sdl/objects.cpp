@@ -527,7 +527,7 @@ ParsedObject Parser::parse_light(const Token& keyword) {
       parse_object_modifiers(*through);  // up to and including the closing '}'
       o.projected_through = std::make_shared<const ParsedObject>(std::move(*through));
     } else if (w == "photons") {
-      skip_block(w);
+      parse_light_photons(light.photons);
     } else {
       fail(t.where, "unknown light_source keyword '" + w + "'");
     }
@@ -666,7 +666,9 @@ bool Parser::parse_object_modifier(ParsedObject& o) {
     parse_clip_block(o, t);
   } else if (w == "motion") {
     parse_motion_block(o, t);
-  } else if (w == "photons" || w == "radiosity" || w == "interior_texture") {
+  } else if (w == "photons") {
+    parse_object_photons(o.flags.photons);
+  } else if (w == "radiosity" || w == "interior_texture") {
     warn(t.where, w + " is not supported yet; ignored");
     skip_block(w);
   } else if (w == "no_radiosity") {

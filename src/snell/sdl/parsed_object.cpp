@@ -34,6 +34,7 @@ scene::ObjectFlags merge(const scene::ObjectFlags& own, const scene::ObjectFlags
   f.no_reflection = own.no_reflection || inherited.no_reflection;
   f.hollow = own.hollow || inherited.hollow;
   f.double_illuminate = own.double_illuminate || inherited.double_illuminate;
+  f.photons = scene::inherit_photons(own.photons, inherited.photons);
   // `inverse` on a union would turn it into an intersection of complements: not a per-child flag.
   return f;
 }

@@ -385,6 +385,12 @@ class Parser {
   void parse_global_settings();
   /// `{ ... }` after global_settings' `radiosity` (radiosity_block.cpp).
   scene::RadiositySettings parse_radiosity_block();
+  /// `{ ... }` after `photons` in global_settings, an object and a light_source (photons_block.cpp).
+  scene::PhotonSettings parse_global_photons();
+  void parse_object_photons(scene::ObjectPhotons& photons);
+  void parse_light_photons(scene::LightPhotons& photons);
+  /// `{ keyword ... }`: calls `keyword` with each identifier (already read) until the closing brace.
+  void parse_keyword_block(const char* context, const std::function<void(const Token&)>& keyword);
   void parse_background();
 
   // ---- fog, media, density (atmosphere.cpp) ----

@@ -137,8 +137,7 @@ void Parser::parse_global_settings() {
     } else if (w == "radiosity") {
       scene_.settings.radiosity = parse_radiosity_block();
     } else if (w == "photons") {
-      warn(t.where, w + " is not supported yet; its block is ignored");
-      skip_block(w);
+      scene_.settings.photons = parse_global_photons();
     } else {
       fail(t.where, "unknown global_settings keyword '" + w + "'");
     }
