@@ -325,6 +325,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
         "ray\n",
         a.objects, a.unbounded_objects, a.nodes, static_cast<double>(a.memory_bytes) / 1024, a.build_seconds,
         tests / static_cast<double>(std::max<uint64_t>(1, result.rays.total())));
+    if (!result.integrator_summary.empty()) fmt::print(stderr, "  {}\n", result.integrator_summary);
   }
   if (preview) preview->finish(o.display_snapshot, o.pause_when_done, &g_interrupted);
   if (result.cancelled) {

@@ -62,6 +62,8 @@ struct RenderStats {
   uint64_t supersampled_pixels = 0;
   uint64_t tiles_rendered = 0;
   bool cancelled = false;
+  /// The integrator's own statistics (radiosity cache), one line or empty.
+  std::string integrator_summary;
 };
 
 struct RenderResult : RenderStats {

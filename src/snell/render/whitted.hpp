@@ -10,7 +10,7 @@
 #include "snell/render/integrator.hpp"
 #include "snell/render/interior_stack.hpp"
 #include "snell/render/light_ray.hpp"
-#include "snell/render/radiosity/hemisphere_gather.hpp"
+#include "snell/render/radiosity/solver.hpp"
 
 namespace snell::render {
 
@@ -21,6 +21,11 @@ class WhittedIntegrator final : public Integrator {
   math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context,
                                double max_distance = math::kInfinity) const override;
   std::string_view name() const override { return "whitted"; }
+  // Radiosity's pretrace, per-tile records and statistics (whitted_radiosity.cpp).
+  void prepare(const scene::Camera& camera, int width, int height, const PixelRect& region,
+               double time) override;
+  void begin_tile(TraceContext& context) const override;
+  std::string summary() const override;
 
   /// Colour seen along `ray` (unit direction) at recursion `level` (camera rays are level 1), with the
   /// ray's contribution `weight` to the pixel: black past max_trace_level or below adc_bailout.
@@ -75,7 +80,7 @@ class WhittedIntegrator final : public Integrator {
   bool has_atmosphere_ = false;
   InteriorStack camera_inside_;
   /// Set when the scene has `radiosity {}`: it then replaces the ambient term.
-  std::unique_ptr<radiosity::HemisphereGather> radiosity_;
+  std::unique_ptr<radiosity::Solver> radiosity_;
 };
 
 /// Origin for a ray leaving surface point `p` towards the side `side` points to: moved off the surface by
