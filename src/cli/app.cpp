@@ -328,7 +328,13 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
     if (a.mesh_instances > 0)
       fmt::print(stderr, "  accel: {} mesh instances of {} native triangles\n", a.mesh_instances,
                  a.native_triangles);
-    if (!result.integrator_statistics.empty()) fmt::print(stderr, "{}\n", result.integrator_statistics);
+    // The integrator's own lines (radiosity cache, photon map), indented like the others.
+    if (!result.integrator_summary.empty()) {
+      std::string lines = result.integrator_summary;
+      for (size_t at = lines.find('\n'); at != std::string::npos; at = lines.find('\n', at + 3))
+        lines.replace(at, 1, "\n  ");
+      fmt::print(stderr, "  {}\n", lines);
+    }
   }
   if (preview) preview->finish(o.display_snapshot, o.pause_when_done, &g_interrupted);
   if (result.cancelled) {

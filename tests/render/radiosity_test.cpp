@@ -1,6 +1,6 @@
 // Radiosity (POV-Ray 3.7 reference, "Radiosity"): the gather's direction table integrates cosine-weighted
 // irradiance, and rendered points under a uniform sky take the analytic value diffuse * colour * sky.
-#include "snell/render/radiosity/hemisphere_gather.hpp"
+#include "snell/render/radiosity/solver.hpp"
 
 #include <gtest/gtest.h>
 
@@ -47,14 +47,36 @@ TEST(RadiosityTest, SphereOverheadHidesSinSquaredOfTheIrradiance) {
   scene::RadiositySettings settings;
   settings.count = 1600;
   settings.brightness = 2;
-  const radiosity::HemisphereGather gather(settings);
+  const radiosity::Solver solver(settings, Vec3(0, 0, -5), nullptr, 5);
   const double radius = 1, height = 2;
-  const Color seen = gather.ambient(Vec3(0, 1, 0), 0, [&](const Vec3& d) {
-    const double along = d.y * height;  // closest approach of the ray to the centre (0, h, 0)
-    const double miss = height * height - along * along;
-    return miss < radius * radius ? Color(0) : Color(1);
-  });
+  TraceContext context;  // no tile open: the gather is not kept
+  const Color seen =
+      solver.ambient(Vec3(0, 0, 0), Vec3(0, 1, 0), 1, context, [&](const Vec3& d, int, double) {
+        const double along = d.y * height;  // closest approach of the ray to the centre (0, h, 0)
+        const double miss = height * height - along * along;
+        return miss < radius * radius ? Color(0) : Color(1);
+      });
   EXPECT_NEAR(seen.r, 2 * (1 - (radius / height) * (radius / height)), 0.01);
+}
+
+TEST(RadiosityTest, BounceSettingsFollowPovRay) {
+  // radiosity.cpp GetRecursionSettings: rays halve per bounce (at least 5), reuse counts nearest_count, 2,
+  // 1, error bound and reuse distances double.
+  scene::RadiositySettings s;
+  s.count = 35;
+  s.nearest_count = 5;
+  const radiosity::BounceSettings b0 = radiosity::bounce_settings(s, 0),
+                                  b1 = radiosity::bounce_settings(s, 1),
+                                  b3 = radiosity::bounce_settings(s, 3);
+  EXPECT_EQ(b0.rays, 35);
+  EXPECT_EQ(b1.rays, 17);
+  EXPECT_EQ(b3.rays, 5);
+  EXPECT_EQ(b0.reuse_count, 5);
+  EXPECT_EQ(b1.reuse_count, 2);
+  EXPECT_EQ(b3.reuse_count, 1);
+  EXPECT_DOUBLE_EQ(b1.error_factor, 2);
+  EXPECT_DOUBLE_EQ(b1.minimum_reuse, 0.03);
+  EXPECT_EQ(b0.directions.size(), 35u);
 }
 
 scene::Scene sphere_under_white_sky(int recursion_limit) {

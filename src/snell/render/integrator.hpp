@@ -10,7 +10,9 @@
 #include "snell/math/constants.hpp"
 #include "snell/math/pcg32.hpp"
 #include "snell/math/ray.hpp"
+#include "snell/render/radiosity/tile_records.hpp"
 #include "snell/render/ray_counters.hpp"
+#include "snell/render/tiles.hpp"
 #include "snell/render/trace_observer.hpp"
 #include "snell/scene/scene.hpp"
 
@@ -27,6 +29,10 @@ struct TraceContext {
   TraceObserver* observer = nullptr;
   /// How many radiosity gathers the current ray is nested in (POV-Ray's radiosityRecursionDepth).
   int radiosity_depth = 0;
+  /// Distance to the surface the last traced ray hit (infinite when it hit none): radiosity's reuse radius.
+  double hit_distance = math::kInfinity;
+  /// Radiosity records this tile gathered (render/radiosity/solver.hpp).
+  radiosity::TileRecords radiosity_tile;
 };
 
 class Integrator {
@@ -37,8 +43,13 @@ class Integrator {
   virtual math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context,
                                        double max_distance = math::kInfinity) const = 0;
   virtual std::string_view name() const = 0;
-  /// Lines for --stats about work done before rendering (the photon map); empty when none.
-  virtual std::string statistics() const { return {}; }
+  /// Work before the image's tiles (radiosity's pretrace), on the render's threads.
+  virtual void prepare(const scene::Camera& /*camera*/, int /*width*/, int /*height*/,
+                       const PixelRect& /*region*/, double /*time*/) {}
+  /// Called before each tile with the context that will render it.
+  virtual void begin_tile(TraceContext& /*context*/) const {}
+  /// A line for --stats about the integrator's own work (empty: nothing to say).
+  virtual std::string summary() const { return {}; }
 };
 
 /// `name` is "whitted". Throws std::invalid_argument for unknown names. Scene and accelerator must outlive

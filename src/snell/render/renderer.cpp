@@ -269,6 +269,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
     _mm_setcsr(_mm_getcsr() | kFlushDenormals);
 #endif
     TraceContext& ctx = contexts.local();
+    integrator->begin_tile(ctx);
     const PixelRect& t = tile.rect;
     if (antialias && options_.aa_method == 2) {
       render_adaptive(t, ctx);
@@ -307,6 +308,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
   };
 
   auto run_all = [&] {
+    integrator->prepare(*camera, w, h, region(), options_.time);
     if (options_.tile_source) return drain_source();
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1),
                       [&](const tbb::blocked_range<size_t>& r) {
@@ -331,7 +333,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
   stats.supersampled_pixels = supersampled;
   stats.tiles_rendered = tiles_done;
   stats.cancelled = stopped;
-  stats.integrator_statistics = integrator->statistics();
+  stats.integrator_summary = integrator->summary();
   return stats;
 }
 

@@ -62,8 +62,8 @@ struct RenderStats {
   uint64_t supersampled_pixels = 0;
   uint64_t tiles_rendered = 0;
   bool cancelled = false;
-  /// The integrator's own --stats lines (Integrator::statistics), e.g. the photon map.
-  std::string integrator_statistics;
+  /// The integrator's own statistics (radiosity cache, photon map), one line each, or empty.
+  std::string integrator_summary;
 };
 
 struct RenderResult : RenderStats {

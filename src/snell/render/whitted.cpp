@@ -88,12 +88,16 @@ struct WhittedIntegrator::ShadingPoint {
   /// How much of the surface's own colour shows (POV-Ray's "att": less when transparent).
   double opacity = 1;
   TraceObserver* observer = nullptr;
+  /// Phong and specular highlights; off for radiosity's gather rays (trace.cpp, ComputeOneLightRay: "too
+  /// bright" otherwise).
+  bool highlights = true;
 };
 
 WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)
     : scene_(scene), accel_(accelerator) {
   if (scene.settings.radiosity)
-    radiosity_ = std::make_unique<radiosity::HemisphereGather>(*scene.settings.radiosity);
+    radiosity_ = std::make_unique<radiosity::Solver>(*scene.settings.radiosity, scene.camera.location,
+                                                     scene.memory_budget, scene.settings.max_trace_level);
   for (const material::Media& m : scene.atmosphere) atmosphere_.push_back(&m);
   for (const auto& object : scene.objects)
     if (object->interior && !object->interior->media.empty()) has_interior_media_ = true;
@@ -140,6 +144,7 @@ Color WhittedIntegrator::trace(const Ray& ray, RayKind kind, int level, double w
   observed.hit(found ? &hit : nullptr);
   const Color seen =
       found ? shade(ray, hit, level, weight, inside, context) : scene_.miss_color(ray.direction);
+  context.hit_distance = found ? hit.t : math::kInfinity;  // after shading, which traces on
   if (!has_atmosphere_) return observed.result(seen);
   return observed.result(
       through_atmosphere(ray, found ? hit.t : std::min(kSkyDepth, max_distance), inside, seen, context));
@@ -163,9 +168,11 @@ Color WhittedIntegrator::through_atmosphere(const Ray& ray, double depth, const 
     if (const material::Interior* interior = inside.at(i)->interior.get())
       for (const material::Media& m : interior->media) media.push_back(&m);
   const double finite_depth = std::min(depth, kSkyDepth);
+  // Radiosity's gather rays see media only with `media on` (POV-Ray 3.7 reference, "media").
+  if (context.radiosity_depth > 0 && !radiosity_->settings().media) media.clear();
   if (!media.empty())
     seen = media_along(media, scene_.lights, ray, finite_depth, context.rng, light_at).apply(seen);
-  if (!scene_.atmosphere.empty())
+  if (!scene_.atmosphere.empty() && (context.radiosity_depth == 0 || radiosity_->settings().media))
     seen = media_along(atmosphere_, scene_.lights, ray, finite_depth, context.rng, light_at).apply(seen);
   return scene_.fogs.empty() ? seen : apply_fogs(scene_.fogs, ray, depth, seen);
 }
@@ -209,6 +216,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   sp.normal = hit.object->texture->shading_normal(hit.texture_point, shape_normal, hit.uv);
   sp.pigment = pigment_at(hit);
   sp.observer = context.observer;
+  sp.highlights = context.radiosity_depth == 0;
   const material::Rgbft& pc = sp.pigment;
   const material::Finish& f = *sp.finish;
   // Opacity: 3.7 scales filter by the brightest channel (a black filter blocks); older versions do not.
@@ -262,12 +270,11 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   if (radiosity_ && radiosity_->gathers_at(context.radiosity_depth) &&
       most_indirect > scene_.settings.adc_bailout) {
     const Vec3 around = radiosity_->settings().normal ? sp.normal : sp.raw_normal;
-    ++context.radiosity_depth;
-    const Color gathered = radiosity_->ambient(around, context.radiosity_depth - 1, [&](const Vec3& dir) {
-      const Ray sample{offset_origin(sp.point, around), dir, ray.time};
-      return trace(sample, RayKind::reflection, level + 1, weight * most_indirect, inside, context);
-    });
-    --context.radiosity_depth;
+    const Color gathered = radiosity_->ambient(
+        sp.point, around, weight * most_indirect, context, [&](const Vec3& dir, int at_level, double w) {
+          return trace({offset_origin(sp.point, around), dir, ray.time}, RayKind::reflection, at_level, w,
+                       inside, context);
+        });
     result += pc.rgb * gathered * (f.diffuse * sp.opacity);
   }
   if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
@@ -456,7 +463,7 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
     if (sp.observer) sp.observer->term(RayTerm::diffuse, intensity * pigment, intensity * pigment * lc);
   }
   // Phong: the mirror direction of the eye against the light direction, to the power phong_size.
-  if (f.phong > 0) {
+  if (f.phong > 0 && sp.highlights) {
     const double c = dot(math::reflect(eye, sp.normal), to_light);
     if (c > 0) {
       const double intensity = f.phong * std::pow(c, f.phong_size);
@@ -466,7 +473,7 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
     }
   }
   // Specular: Blinn's halfway vector, exponent 1/roughness.
-  if (f.specular > 0) {
+  if (f.specular > 0 && sp.highlights) {
     const Vec3 h = 0.5 * (to_light - eye);
     const double hl = length(h);
     if (hl > 0) {

@@ -11,7 +11,7 @@
 #include "snell/render/interior_stack.hpp"
 #include "snell/render/light_ray.hpp"
 #include "snell/render/photons/caustics.hpp"
-#include "snell/render/radiosity/hemisphere_gather.hpp"
+#include "snell/render/radiosity/solver.hpp"
 
 namespace snell::render {
 
@@ -22,7 +22,11 @@ class WhittedIntegrator final : public Integrator {
   math::Color trace_camera_ray(const math::Ray& ray, TraceContext& context,
                                double max_distance = math::kInfinity) const override;
   std::string_view name() const override { return "whitted"; }
-  std::string statistics() const override { return caustics_ ? caustics_->summary() : std::string(); }
+  // Radiosity's pretrace, per-tile records and statistics (whitted_radiosity.cpp).
+  void prepare(const scene::Camera& camera, int width, int height, const PixelRect& region,
+               double time) override;
+  void begin_tile(TraceContext& context) const override;
+  std::string summary() const override;
 
   /// Colour seen along `ray` (unit direction) at recursion `level` (camera rays are level 1), with the
   /// ray's contribution `weight` to the pixel: black past max_trace_level or below adc_bailout.
@@ -78,7 +82,7 @@ class WhittedIntegrator final : public Integrator {
   bool has_atmosphere_ = false;
   InteriorStack camera_inside_;
   /// Set when the scene has `radiosity {}`: it then replaces the ambient term.
-  std::unique_ptr<radiosity::HemisphereGather> radiosity_;
+  std::unique_ptr<radiosity::Solver> radiosity_;
   /// Set when the scene has `photons {}`: the caustic photon map (render/photons/caustics.hpp).
   std::unique_ptr<photons::Caustics> caustics_;
 };

@@ -1,9 +1,7 @@
 #pragma once
 // POV-Ray 3.7's `global_settings { radiosity { ... } }` (reference "Radiosity Basics" and "Configuring
-// Radiosity"; defaults from source/core/lighting/radiosity.h). snell honours count, recursion_limit,
-// brightness, gray_threshold and normal; the cache settings (error_bound, nearest_count, pretrace,
-// low_error_factor, minimum/maximum_reuse, always_sample) are read and kept, but snell gathers along a fixed
-// direction set at every shading point instead of caching (render/radiosity/hemisphere_gather.hpp).
+// Radiosity"; defaults from source/core/lighting/radiosity.h). Used by the irradiance cache
+// (render/radiosity/solver.hpp); docs/language.md lists what differs from POV-Ray.
 namespace snell::scene {
 
 struct RadiositySettings {
@@ -21,6 +19,8 @@ struct RadiositySettings {
   double minimum_reuse = 0.015;
   double maximum_reuse = 0.2;
   double adc_bailout = 0.01;
+  /// Caps each gather ray's brightest channel; 0 or negative: no cap.
+  double max_sample = -1;
   bool normal = false;
   bool media = false;
   bool always_sample = false;

@@ -49,7 +49,9 @@ scene::RadiositySettings Parser::parse_radiosity_block() {
       r.always_sample = parse_bool_optional(true);
     } else if (w == "subsurface") {
       parse_bool_optional(true);
-    } else if (w == "max_sample" || w == "distance_maximum") {
+    } else if (w == "max_sample") {
+      r.max_sample = parse_float();
+    } else if (w == "distance_maximum") {
       parse_float();
     } else if (w == "brilliance" || w == "save_file" || w == "load_file") {
       warn(t.where, "radiosity " + w + " is not supported; ignored");

@@ -29,7 +29,7 @@ bool Caustics::replaces_shadow(const scene::Light& light, const scene::Object& b
 
 std::string Caustics::summary() const {
   return fmt::format(
-      "  photons: {} shot, {} stored ({}), spacing {:.4g}, gather radius {:.4g}, shot in {:.3f}s", shot_,
+      "photons: {} shot, {} stored ({}), spacing {:.4g}, gather radius {:.4g}, shot in {:.3f}s", shot_,
       map_.size(), memory::format_size(map_.memory_bytes()), spacing_, map_.gather_radius(), seconds_);
 }
 
