@@ -112,6 +112,15 @@ TEST(SdlPigment, DeclaredColorMapAndWaveModifiers) {
   expect_rgb(color_at(scene, {0.25, 0, 0}), 1, 1, 1);
 }
 
+TEST(SdlPigment, SpiralsDefaultToTheTriangleWave) {
+  // POV-Ray's SpiralPattern folds with the triangle wave unless told otherwise. spiral1 3 at <1, 0, 0.1>:
+  // z + r + 3 * angle / 2 pi with the angle pi / 2 from -y gives 1.85, folded by POV-Ray's period 1.00001
+  // to 0.84999, triangle 0.30002 (the ramp would give 0.85).
+  const std::string scene = R"(sphere { 0, 2 pigment { spiral1 3 color_map { [0 rgb 0] [1 rgb 1] } } })";
+  const double v = 2 * (1 - std::fmod(1.85, 1.00001));
+  expect_rgb(color_at(scene, {1, 0, 0.1}), v, v, v);
+}
+
 TEST(SdlPigment, PigmentMapBlendsSubPigments) {
   const std::string scene = R"(
     #declare P = pigment { rgb <0, 0, 1> }
