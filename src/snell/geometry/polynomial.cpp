@@ -168,6 +168,21 @@ bool solve_quadratic(double a, double b, double c, double& t0, double& t1) {
   return true;
 }
 
+namespace {
+
+// A monic quadratic in closed form: the calls from spline shapes (prism, lathe, sor) are about half
+// quadratics, for which the Sturm sequence and Newton refinement cost several times the formula.
+int quadratic_roots(const Poly& p, double lo, double hi, std::span<double> roots) {
+  double t0, t1;
+  if (!solve_quadratic(1.0, p.c[1], p.c[0], t0, t1)) return 0;
+  int n = 0;
+  if (t0 > lo && t0 <= hi) roots[n++] = t0;
+  if (t1 != t0 && t1 > lo && t1 <= hi) roots[n++] = t1;
+  return n;
+}
+
+}  // namespace
+
 int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<double> roots) {
   if (coeffs.size() > static_cast<size_t>(kMaxPolynomialDegree + 1))
     throw std::invalid_argument("real_roots: degree above " + std::to_string(kMaxPolynomialDegree));
@@ -196,6 +211,7 @@ int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<d
     return 0;
   }
 
+  if (p.degree == 2) return quadratic_roots(p, lo, hi, roots);
   const SturmSequence s(p);
   int n = 0;
   struct Span {
