@@ -149,3 +149,15 @@ TEST(PolynomialTest, QuadraticsTakeTheHalfOpenIntervalAndDoubleRootsOnce) {
   EXPECT_NEAR(wide[0], 1e-9, 1e-22);
   EXPECT_NEAR(wide[1], 1e9, 1e-4);
 }
+
+TEST(PolynomialTest, MaxRootsKeepsTheSmallest) {
+  const auto c = from_roots({-2, 0.5, 1, 3});
+  std::array<double, kMaxPolynomialDegree> out{};
+  ASSERT_EQ(real_roots(c, -10, 10, out, 1), 1);
+  EXPECT_NEAR(out[0], -2, 1e-12);
+  ASSERT_EQ(real_roots(c, -1, 10, out, 2), 2);  // the window drops -2
+  EXPECT_NEAR(out[0], 0.5, 1e-12);
+  EXPECT_NEAR(out[1], 1, 1e-12);
+  ASSERT_EQ(real_roots(from_roots({0.25, 0.75}), 0, 1, out, 1), 1);  // the closed-form quadratic too
+  EXPECT_NEAR(out[0], 0.25, 1e-15);
+}
