@@ -134,3 +134,30 @@ TEST(PolynomialTest, QuadraticIsStableForSmallRoot) {
   EXPECT_NEAR(t1, 1e8, 1e-4);
   EXPECT_FALSE(solve_quadratic(1, 0, 1, t0, t1));
 }
+
+TEST(PolynomialTest, QuadraticsTakeTheHalfOpenIntervalAndDoubleRootsOnce) {
+  // Quadratics are solved in closed form: same contract as the Sturm path.
+  const auto c = from_roots({0.25, 0.75}, -3);
+  EXPECT_EQ(roots_in(c, -1, 1), (std::vector<double>{0.25, 0.75}));
+  EXPECT_EQ(roots_in(c, 0.25, 0.75), (std::vector<double>{0.75}));  // (0.25, 0.75]
+  EXPECT_TRUE(roots_in(c, 0.75, 2).empty());
+  EXPECT_EQ(roots_in(from_roots({0.5, 0.5}), 0, 1), (std::vector<double>{0.5}));
+  EXPECT_TRUE(roots_in({1, 0, 1}, -5, 5).empty());  // x^2 + 1
+  // A root near 1e-9 beside one near 1e9: no cancellation (the stable formula).
+  const auto wide = roots_in(from_roots({1e-9, 1e9}), -1, 2e9);
+  ASSERT_EQ(wide.size(), 2u);
+  EXPECT_NEAR(wide[0], 1e-9, 1e-22);
+  EXPECT_NEAR(wide[1], 1e9, 1e-4);
+}
+
+TEST(PolynomialTest, MaxRootsKeepsTheSmallest) {
+  const auto c = from_roots({-2, 0.5, 1, 3});
+  std::array<double, kMaxPolynomialDegree> out{};
+  ASSERT_EQ(real_roots(c, -10, 10, out, 1), 1);
+  EXPECT_NEAR(out[0], -2, 1e-12);
+  ASSERT_EQ(real_roots(c, -1, 10, out, 2), 2);  // the window drops -2
+  EXPECT_NEAR(out[0], 0.5, 1e-12);
+  EXPECT_NEAR(out[1], 1, 1e-12);
+  ASSERT_EQ(real_roots(from_roots({0.25, 0.75}), 0, 1, out, 1), 1);  // the closed-form quadratic too
+  EXPECT_NEAR(out[0], 0.25, 1e-15);
+}

@@ -25,7 +25,7 @@ constexpr double kObjectCost = 4.0;
 // kStackSize (one entry per level) never overflows.
 constexpr int kMaxSahDepth = 64;
 constexpr int kMaxBinaryDepth = kMaxSahDepth + 32;
-// A walk pops one node and pushes at most kWidth children per level.
+// A walk pops one node and pushes at most kWidth children per level (sorted in place on the stack).
 constexpr int kStackSize = (Bvh::kWidth - 1) * kMaxBinaryDepth + Bvh::kWidth;
 
 /// The binary tree the builder makes before it is collapsed to Bvh::Node.
@@ -252,19 +252,16 @@ bool walk(const Slabs& slabs, const std::vector<Bvh::Node>& nodes,
     const Bvh::Node& node = nodes[p.index];
     Real entry[Bvh::kWidth];
     int mask = slabs.test(node.lo, node.hi, box_t_min, box_t_max, entry);
-    std::array<Pending, Bvh::kWidth> hits;
+    // The children hit are sorted straight onto the stack, farthest first (insertion by decreasing entry).
+    Pending* hits = stack.data() + top;
     int n = 0;
     for (; mask != 0; mask &= mask - 1) {
       const int k = std::countr_zero(static_cast<unsigned>(mask));
       if (node.child[k] == Bvh::kNoChild) continue;
-      // Insertion by decreasing entry.
       int j = n++;
       for (; j > 0 && hits[j - 1].entry < entry[k]; --j) hits[j] = hits[j - 1];
       hits[j] = {node.child[k], node.count[k], entry[k]};
     }
-    // All kWidth slots are copied (a fixed-size copy the compiler inlines; a loop of n became a memcpy
-    // call), only n of them are kept; kStackSize leaves room for the rest.
-    std::copy(hits.begin(), hits.end(), stack.begin() + top);
     top += n;
   }
   return found;

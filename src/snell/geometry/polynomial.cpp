@@ -168,7 +168,22 @@ bool solve_quadratic(double a, double b, double c, double& t0, double& t1) {
   return true;
 }
 
-int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<double> roots) {
+namespace {
+
+// A monic quadratic in closed form: the calls from spline shapes (prism, lathe, sor) are about half
+// quadratics, for which the Sturm sequence and Newton refinement cost several times the formula.
+int quadratic_roots(const Poly& p, double lo, double hi, std::span<double> roots, int max_roots) {
+  double t0, t1;
+  if (!solve_quadratic(1.0, p.c[1], p.c[0], t0, t1)) return 0;
+  int n = 0;
+  if (t0 > lo && t0 <= hi && max_roots > 0) roots[n++] = t0;
+  if (t1 != t0 && t1 > lo && t1 <= hi && n < max_roots) roots[n++] = t1;
+  return n;
+}
+
+}  // namespace
+
+int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<double> roots, int max_roots) {
   if (coeffs.size() > static_cast<size_t>(kMaxPolynomialDegree + 1))
     throw std::invalid_argument("real_roots: degree above " + std::to_string(kMaxPolynomialDegree));
   if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
@@ -189,13 +204,14 @@ int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<d
 
   if (p.degree == 1) {
     const double r = -p.c[0];
-    if (r > lo && r <= hi) {
+    if (r > lo && r <= hi && max_roots > 0) {
       roots[0] = r;
       return 1;
     }
     return 0;
   }
 
+  if (p.degree == 2) return quadratic_roots(p, lo, hi, roots, max_roots);
   const SturmSequence s(p);
   int n = 0;
   struct Span {
@@ -206,7 +222,8 @@ int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<d
   std::array<Span, 256> stack;
   int top = 0;
   stack[top++] = {lo, hi, s.sign_changes(lo), s.sign_changes(hi), 0};
-  while (top > 0) {
+  // Spans are walked lowest first, so roots come out in increasing order and the walk can stop early.
+  while (top > 0 && n < max_roots) {
     const Span sp = stack[--top];
     const int count = sp.ca - sp.cb;
     if (count <= 0) continue;

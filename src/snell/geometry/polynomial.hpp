@@ -15,8 +15,11 @@ inline constexpr int kMaxPolynomialDegree = 6;
 /// (lo, hi] into `roots`, in increasing order, and returns their number. Leading coefficients that are
 /// negligible relative to the others lower the degree. A polynomial that vanishes identically has no
 /// isolated roots and yields 0. Throws std::invalid_argument for a degree above kMaxPolynomialDegree, a
-/// non-finite or empty interval, or `roots` shorter than the degree.
-int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<double> roots);
+/// non-finite or empty interval, or `roots` shorter than the degree. With `max_roots`, only the smallest
+/// max_roots roots are refined and written (a nearest-hit query needs one: the others cost their isolation
+/// and Newton refinement).
+int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<double> roots,
+               int max_roots = kMaxPolynomialDegree);
 
 /// Evaluates sum_i coeffs[i] * x^i (Horner).
 double evaluate_polynomial(std::span<const double> coeffs, double x);

@@ -34,35 +34,46 @@ LocalHit Torus::make_hit(const Vec3& p, double t) const {
   return h;
 }
 
-void Torus::gather(const Ray& ray, HitBuffer<4>& hits) const {
+bool Torus::gather(const Ray& ray, HitBuffer<4>& hits, int max_roots) const {
   // Work with a unit direction and an origin moved to the ray's closest approach to the centre: the
   // quartic's coefficients then stay of the torus' size however far away the ray starts. A point of the
   // ray is o + u dn with u = f + t |d|.
   const double dl = length(ray.direction);
-  if (!(dl > 0) || !std::isfinite(dl)) return;
+  if (!(dl > 0) || !std::isfinite(dl)) return false;
   const Vec3 dn = ray.direction / dl;
   const double f = dot(ray.origin, dn);
   const Vec3 o = ray.origin - f * dn;
   const double rb = major_ + minor_;
   const double c2 = rb * rb - length_squared(o);
-  if (c2 < 0) return;
+  if (c2 < 0) return false;
   const double half = std::sqrt(c2);
   const double u_lo = std::max(-half * 1.000001, f + hits.t_min() * dl);
   const double u_hi = std::min(half * 1.000001, f + hits.t_max() * dl);
-  if (!(u_lo < u_hi)) return;
+  if (!(u_lo < u_hi)) return false;
 
   const std::array<double, 5> coeffs = torus_quartic(o, dn, major_, minor_);
   std::array<double, 4> roots{};
-  const int n = real_roots(coeffs, u_lo, u_hi, roots);
+  const int n = real_roots(coeffs, u_lo, u_hi, roots, max_roots);
+  bool refused = false;
   for (int i = 0; i < n; ++i) {
     const double t = (roots[i] - f) / dl;
-    if (hits.accepts(t)) hits.add(make_hit(o + roots[i] * dn, t));
+    if (hits.accepts(t)) {
+      hits.add(make_hit(o + roots[i] * dn, t));
+    } else {
+      refused = true;
+    }
   }
+  return refused;
 }
 
 bool Torus::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
   HitBuffer<4> hits(t_min, t_max);
-  gather(ray, hits);
+  // The nearest root is all a nearest hit needs; should rounding push its t out of the window, the
+  // next roots may still lie inside: then all of them.
+  if (gather(ray, hits, 1)) {
+    hits = HitBuffer<4>(t_min, t_max);
+    gather(ray, hits);
+  }
   return hits.nearest(hit);
 }
 

@@ -16,7 +16,9 @@ class Torus final : public Shape {
   std::string_view kind() const override { return "torus"; }
 
  private:
-  void gather(const Ray& ray, HitBuffer<4>& hits) const;
+  /// Adds the crossings to `hits`; with `max_roots`, only those of the smallest max_roots roots (see
+  /// real_roots). Returns whether a root was refused by `hits` (its t rounded outside the window).
+  bool gather(const Ray& ray, HitBuffer<4>& hits, int max_roots = 4) const;
   LocalHit make_hit(const Vec3& p, double t) const;
 
   double major_, minor_;
