@@ -1,6 +1,6 @@
 // snell texture gallery: every pattern on a labelled grid of tiles, pigments and patterned textures in the
 // top rows, normals (on a plain white tile) in the bottom rows. Each label is a `text {}` under its tile.
-// Render: snell render scenes/textures.pov -o textures.png -w 750 -h 685 --aa 0.3
+// Render: snell render scenes/textures.pov -o textures.png -w 720 -h 658 --aa 0.3
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
