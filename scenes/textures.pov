@@ -1,11 +1,11 @@
 // snell texture gallery: every pattern on a labelled grid of tiles, pigments and patterned textures in the
-// top rows, normals (on a plain white tile) in the bottom row. Each label is a `text {}` under its tile.
-// Render: snell render scenes/textures.pov -o textures.png -w 750 -h 600 --aa 0.3
+// top rows, normals (on a plain white tile) in the bottom rows. Each label is a `text {}` under its tile.
+// Render: snell render scenes/textures.pov -o textures.png -w 720 -h 658 --aa 0.3
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
 #declare Columns = 9;
-#declare Rows = 7;
+#declare Rows = 8;
 #declare RowHeight = 1.2;
 camera {
   orthographic
@@ -121,3 +121,21 @@ BumpTile(5, 6, "agate", normal { agate 0.6 scale 0.5 })
 BumpTile(6, 6, "bozo", normal { bozo 0.8 scale 0.15 })
 BumpTile(7, 6, "cells", normal { cells 0.5 scale 0.15 })
 BumpTile(8, 6, "mandel", normal { mandel 40 0.5 scale 0.4 translate <0.75, -0.5, 0> })
+// Row 8: fractal variants, potential, average of textures, facets and bump_map.
+Tile(0, 7, "magnet 1", pigment { magnet 1 mandel 30 color_map { Grey } scale 0.3 translate <0.2, -0.5, 0> })
+Tile(1, 7, "magnet 2 julia", pigment { magnet 2 julia <1.2, -0.3>, 30 interior 1, 0.2 color_map { Grey }
+  scale 0.3 translate <0.1, -0.5, 0> })
+Tile(2, 7, "mandel exp 3", pigment { mandel 40 exponent 3 color_map { Grey } scale 0.35 translate Centre })
+Tile(3, 7, "julia exp 4", pigment { julia <0.6, 0.3>, 40 exponent 4 color_map { Grey } scale 0.35
+  translate Centre })
+Tile(4, 7, "potential", pigment { potential { blob { threshold 0.5 sphere { <-0.2, 0, 0>, 0.45, 1 }
+  sphere { <0.2, 0.1, 0>, 0.4, 1 } } } color_map { Grey } translate Centre })
+TextureTile(5, 7, "avg texture", texture { average texture_map {
+  [1 pigment { gradient x color_map { Grey } scale 0.3 } finish { ambient 0.15 }]
+  [1 pigment { rgb <0.8, 0.3, 0.1> } normal { bumps 0.8 scale 0.05 } finish { ambient 0.15 }] } })
+BumpTile(6, 7, "facets coords", normal { facets coords 0.6 size 0.08 })
+// facets without coords snaps the normal itself, so it shows on a curved surface.
+sphere { Centre, 0.42 texture { pigment { rgb <0.9, 0.88, 0.85> } normal { facets size 0.15 }
+  finish { ambient 0.1 diffuse 0.8 specular 0.4 roughness 0.02 } } Place(7, 7) }
+Label(7, 7, "facets")
+BumpTile(8, 7, "bump_map", normal { bump_map { png "povmap.png" bump_size 3 } scale 0.88 translate <0.06, -0.94, 0> })

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "pattern_point.hpp"
 #include "snell/math/pcg32.hpp"
 #include "snell/texture/cellular_patterns.hpp"
 #include "snell/texture/noise_patterns.hpp"
@@ -13,18 +14,8 @@
 #include "snell/texture/value_patterns.hpp"
 
 using namespace snell::texture;
-using snell::material::PatternPoint;
 using snell::math::Vec3;
-
-namespace {
-
-PatternPoint at(const Vec3& p) {
-  PatternPoint point;
-  point.p = p;
-  return point;
-}
-
-}  // namespace
+using snell::texture::test::at;
 
 TEST(PatternNormalTest, GradientPatternTiltsAgainstItsDirectionByPovRaysFactor) {
   // gradient x has gradient (1,0,0); POV-Ray adds -5 * 0.02 * 4/3 * bump_size times the gradient.

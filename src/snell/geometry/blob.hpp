@@ -34,6 +34,7 @@ class Blob final : public Shape {
 
   /// The summed field at p (blob space).
   double density(const Vec3& p) const;
+  double threshold() const { return threshold_; }
 
  private:
   /// One component's share of the field along a ray: sum_i c[i] s^i on [s0, s1] (s: local ray parameter).

@@ -5,7 +5,8 @@
 #include "snell/sdl/pigment_builder.hpp"
 #include "snell/texture/average_normal.hpp"
 #include "snell/texture/block_normals.hpp"
-#include "snell/texture/image_pattern.hpp"
+#include "snell/texture/bump_map.hpp"
+#include "snell/texture/facets.hpp"
 #include "snell/texture/object_pattern.hpp"
 #include "snell/texture/pattern_normal.hpp"
 
@@ -21,6 +22,8 @@ struct Parser::NormalBuilder {
   double accuracy = 0.02;
   std::optional<texture::SlopeMap> slope_map;
   std::vector<std::pair<double, NormalPtr>> normal_map;
+  /// `facets` and its size, coords and metric (facets.hpp), a pattern for normals only.
+  std::optional<texture::FacetsParams> facets;
   /// `checker normal {A} normal {B}`: one normal per block.
   std::vector<NormalPtr> block_entries;
 
@@ -34,6 +37,7 @@ struct Parser::NormalBuilder {
     const texture::NormalSpec& s = declared->spec();
     pattern.start_pattern();
     pattern.spec.value_pattern = s.pattern;
+    if (const auto* f = dynamic_cast<const texture::FacetsPattern*>(s.pattern.get())) facets = f->params();
     pattern.spec.wave = s.wave;
     pattern.spec.warps = s.warps;
     pattern.uv_mapping = s.uv_mapping;
@@ -48,6 +52,7 @@ struct Parser::NormalBuilder {
     if (!pattern.patterned) return plain;
     if (pattern.special == "average") return std::make_shared<texture::AverageNormal>(normal_map);
     texture::PatternSpec ps = pattern.build_spec();
+    if (facets) ps.value_pattern = std::make_shared<texture::FacetsPattern>(*facets);
     if (ps.block_pattern && !block_entries.empty())
       return std::make_shared<texture::BlockNormal>(ps.block_pattern, ps.warps, block_entries);
     if (ps.block_pattern) ps.value_pattern = std::make_shared<texture::BlockValuePattern>(ps.block_pattern);
@@ -123,7 +128,25 @@ void Parser::parse_normal_body(NormalBuilder& b, const char* closer) {
       if (b.block_entries.empty() && starts_numeric()) b.bump_size = parse_float();
       continue;
     }
+    if (w == "facets") {
+      raw_next();
+      b.pattern.start_pattern();
+      b.pattern.spec.value_pattern = std::make_shared<texture::FacetsPattern>();
+      b.facets = texture::FacetsParams{};
+      if (starts_numeric()) b.bump_size = parse_float();
+      continue;
+    }
+    if (b.facets && (w == "size" || w == "coords" || w == "metric")) {
+      raw_next();
+      const double v = parse_float();
+      if (w == "size") b.facets->size = v;
+      if (w == "coords") b.facets->coords = v;
+      if (w == "metric") b.facets->metric = v;
+      if (w == "metric" && !(v > 0)) fail(t.where, "facets metric must be positive");
+      continue;
+    }
     if (parse_pattern_type(b.pattern)) {
+      b.facets.reset();
       accept(",");  // `gradient x, 0.5`
       if (starts_numeric()) b.bump_size = parse_float();
       continue;
@@ -148,11 +171,11 @@ void Parser::parse_normal_body(NormalBuilder& b, const char* closer) {
       raw_next();
       parse_normal_map(b);
     } else if (w == "bump_map") {
-      // An image's grey levels as heights, bent by their gradient like any value pattern.
+      // An image's grey levels as heights, bent by pixel-to-pixel steps (bump_map.hpp).
       raw_next();
       auto image = std::dynamic_pointer_cast<const texture::ImageMapPigment>(parse_image_map(&b.bump_size));
       b.pattern.start_pattern();
-      b.pattern.spec.value_pattern = std::make_shared<texture::ImagePattern>(image);
+      b.pattern.spec.value_pattern = std::make_shared<texture::BumpMapPattern>(image);
     } else if (w == "no_bump_scale") {
       raw_next();
     } else if (parse_pattern_modifier(b.pattern)) {

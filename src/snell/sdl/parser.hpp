@@ -228,6 +228,9 @@ class Parser {
   ParsedObject parse_object_argument(const char* function_name);
   /// An object (declared or written out) as an inside test in world space, for the object pattern.
   std::function<bool(const math::Vec3&)> parse_inside_test();
+  /// `{ Blob_or_Isosurface } [threshold bool]` after `potential`: the field as a pattern
+  /// (potential_pattern.cpp).
+  std::shared_ptr<const texture::ValuePattern> parse_potential_pattern();
   /// Sets an existing identifier where it lives, or declares a global one (#read, trace's normal).
   void assign(const std::string& name, Value value);
 
@@ -300,6 +303,8 @@ class Parser {
   std::shared_ptr<const texture::ValuePattern> parse_slope();
   /// `noise_generator N` after its keyword: 1, 2 or 3, else an error.
   texture::NoiseGenerator parse_noise_generator();
+  /// After `magnet`: the type, mandel or julia and julia's constant (pigments.cpp).
+  void parse_magnet_head(PigmentBuilder& b);
   /// `{ [IDENT] [v colour] ... }` after `color_map`.
   std::shared_ptr<const texture::ColorMap> parse_color_map();
   /// `{ [IDENT] [v pigment-body] ... }` after `pigment_map`.

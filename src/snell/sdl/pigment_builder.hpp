@@ -40,6 +40,7 @@ struct Parser::PigmentBuilder {
   /// `uv_mapping`: kept through start_pattern (it may come before the pattern).
   bool uv_mapping = false;
   texture::FractalShading fractal;
+  texture::MagnetParams magnet;
   double julia_real = 0, julia_imaginary = 0;
   bool brick = false;
   math::Vec3 brick_size{8, 3, 4.5};
@@ -126,6 +127,7 @@ struct Parser::PigmentBuilder {
     if (special == "mandel") out.value_pattern = std::make_shared<texture::MandelPattern>(fractal);
     if (special == "julia")
       out.value_pattern = std::make_shared<texture::JuliaPattern>(julia_real, julia_imaginary, fractal);
+    if (special == "magnet") out.value_pattern = std::make_shared<texture::MagnetPattern>(magnet, fractal);
     if (special == "spiral1") out.value_pattern = std::make_shared<texture::Spiral1Pattern>(arms);
     if (special == "spiral2") out.value_pattern = std::make_shared<texture::Spiral2Pattern>(arms);
     if (special == "ripples" || special == "waves") {

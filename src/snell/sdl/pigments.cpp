@@ -34,7 +34,7 @@ PigmentPtr solid(const material::Rgbft& c) {
 
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
-  static const char* const patterns[] = {"facets", "pavement", "tiling", "aoi", "magnet", "potential"};
+  static const char* const patterns[] = {"pavement", "tiling", "aoi"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -103,6 +103,7 @@ void Parser::parse_pigment_body(PigmentBuilder& b, const char* closer) {
       }
       if (parse_pattern_type(b)) continue;
       if (is_unsupported_pattern(t.text)) fail(t.where, "pattern '" + t.text + "' is not supported yet");
+      if (t.text == "facets") fail(t.where, "the facets pattern can only be used in a normal");
       if (parse_pattern_modifier(b)) continue;
       if (t.text == "pigment" && std::string(closer) == "]") {
         // `[v pigment { ... }]` in a pigment_map: accepted like the bare body.
@@ -154,18 +155,22 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
   } else if (w == "function") {
     raw_next();
     value = parse_function_pattern(t);
+  } else if (w == "potential") {
+    raw_next();
+    value = parse_potential_pattern();
   } else if (w == "pigment_pattern") {
     raw_next();
     value = std::make_shared<texture::PigmentPattern>(parse_pigment_block(nullptr));
   } else if (w == "marble" || w == "wood" || w == "agate" || w == "crackle" || w == "quilted" ||
              w == "ripples" || w == "waves" || w == "spiral1" || w == "spiral2" || w == "mandel" ||
              w == "julia" || w == "average" || w == "bozo" || w == "spotted" || w == "granite" ||
-             w == "wrinkles" || w == "bumps" || w == "dents" || w == "density_file") {
+             w == "wrinkles" || w == "bumps" || w == "dents" || w == "density_file" || w == "magnet") {
     value = std::make_shared<texture::GranitePattern>();  // replaced in build_spec(), with its parameters
     special = w == "spotted" ? "bozo" : w;
   }
   if (value) {
-    if (w != "gradient" && w != "image_pattern" && w != "slope" && w != "function" && w != "pigment_pattern")
+    if (w != "gradient" && w != "image_pattern" && w != "slope" && w != "function" &&
+        w != "pigment_pattern" && w != "potential")
       raw_next();
     b.start_pattern();
     b.spec.value_pattern = std::move(value);
@@ -185,13 +190,14 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
         fail(file_token.where, "cannot read density file \"" + file + "\": " + e.what());
       }
     }
+    if (w == "magnet") parse_magnet_head(b);
     if (w == "julia") {
       const Numeric c = parse_numeric();
       b.julia_real = c.v[0];
       b.julia_imaginary = c.size == 1 ? c.v[0] : c.v[1];
       accept(",");
     }
-    if (w == "mandel" || w == "julia") {
+    if (w == "mandel" || w == "julia" || w == "magnet") {
       const double n = parse_float();
       if (!(n >= 1 && n <= 1e6)) fail(t.where, "the iteration count must be between 1 and 1000000");
       b.fractal.max_iterations = static_cast<int>(n);
@@ -362,16 +368,21 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     if (!(b.crackle.metric > 0)) fail(t.where, "crackle metric must be positive");
   } else if (w == "interior" || w == "exterior" || w == "exponent") {
     raw_next();
-    if (b.special != "mandel" && b.special != "julia")
-      fail(t.where, "'" + w + "' is only for mandel and julia");
+    if (w == "exponent" ? b.special != "mandel" && b.special != "julia"
+                        : b.special != "mandel" && b.special != "julia" && b.special != "magnet")
+      fail(t.where, "'" + w + "' is only for mandel and julia" + (w == "exponent" ? "" : " and magnet"));
     const double type = parse_float();
     if (w == "exponent") {
-      if (type != 2) fail(t.where, "only exponent 2 is supported for mandel and julia");
+      // POV-Ray falls back to 2 with a warning outside 2..33 (parser_materials.cpp, kFractalMaxExponent).
+      const int exponent = static_cast<int>(type);
+      b.fractal.exponent = exponent >= 2 && exponent <= 33 ? exponent : 2;
+      if (exponent < 2 || exponent > 33) warn(t.where, "fractal exponents are 2 to 33: using 2");
       return true;
     }
     accept(",");
     const double factor = parse_float();
-    if (type < 0 || type > 3) fail(t.where, "only " + w + " types 0 to 3 are supported");
+    if (type < 0 || type > (w == "interior" ? 6 : 8))
+      fail(t.where, w + " types are 0 to " + (w == "interior" ? "6" : "8"));
     (w == "interior" ? b.fractal.interior_type : b.fractal.exterior_type) = static_cast<int>(type);
     (w == "interior" ? b.fractal.interior_factor : b.fractal.exterior_factor) = factor;
   } else if (w == "control0" || w == "control1") {
@@ -397,6 +408,25 @@ bool Parser::parse_pattern_modifier(PigmentBuilder& b) {
     return false;
   }
   return true;
+}
+
+void Parser::parse_magnet_head(PigmentBuilder& b) {
+  // `magnet 1|2 mandel n` or `magnet 1|2 julia <c>, n` (the iteration count is read by the caller).
+  const Token type = peek();
+  const double n = parse_float();
+  if (n != 1 && n != 2) fail(type.where, "magnet type must be 1 or 2");
+  b.magnet.type = static_cast<int>(n);
+  const Token form = peek();
+  if (!form.is_word("mandel") && !form.is_word("julia"))
+    fail(form.where, "expected 'mandel' or 'julia' after the magnet type");
+  raw_next();
+  b.magnet.julia = form.is_word("julia");
+  if (b.magnet.julia) {
+    const Numeric c = parse_numeric();
+    b.magnet.c_real = c.v[0];
+    b.magnet.c_imaginary = c.size == 1 ? c.v[0] : c.v[1];
+    accept(",");
+  }
 }
 
 texture::NoiseGenerator Parser::parse_noise_generator() {

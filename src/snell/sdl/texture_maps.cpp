@@ -7,6 +7,7 @@
 
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
+#include "snell/texture/average_texture.hpp"
 #include "snell/texture/object_pattern.hpp"
 #include "snell/texture/polygon_block_patterns.hpp"
 #include "snell/texture/texture_map.hpp"
@@ -93,7 +94,7 @@ bool Parser::parse_texture_pattern(TexturePatternBuilder& b) {
       }
       if (!e.is_symbol("[")) fail(e.where, "expected '[' or '}' in texture_map, found '" + e.text + "'");
       raw_next();
-      const double value = parse_float();
+      const double value = parse_map_entry_value(b.pattern.special == "average");
       accept(",");
       const NestingGuard guard(*this, e.where);
       b.map.emplace_back(value, parse_texture_body("]"));
@@ -117,6 +118,15 @@ void Parser::finish_texture_pattern(const TexturePatternBuilder& b, material::Te
                                     const scene::SourceLocation& where) {
   if (b.material_map) {
     texture.selector = b.material_map;
+    return;
+  }
+  if (b.pattern.special == "average") {
+    if (b.map.empty()) fail(where, "an average texture needs a texture_map");
+    try {
+      texture::average_textures(b.map, texture);
+    } catch (const std::invalid_argument& e) {
+      fail(where, std::string("average texture: ") + e.what());
+    }
     return;
   }
   texture::PatternSpec spec = b.pattern.build_spec();

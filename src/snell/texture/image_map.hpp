@@ -36,10 +36,11 @@ class ImageMapPigment final : public material::Pigment {
   /// Throws std::invalid_argument for an empty image.
   explicit ImageMapPigment(ImageMapSpec spec);
   material::Rgbft at(const material::PatternPoint& point) const override;
-
- private:
+  const ImageMapSpec& spec() const { return spec_; }
+  /// The colour at image coordinates (u, v) in [0,1), with the spec's interpolation.
   math::Color texel(double u, double v) const;
 
+ private:
   ImageMapSpec spec_;
 };
 

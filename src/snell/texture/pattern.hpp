@@ -28,6 +28,15 @@ class BumpSource {
   virtual Vec3 bump(const Vec3& p) const = 0;
 };
 
+/// A pattern that sets the bent normal itself instead of adding a vector to it (POV-Ray normal.cpp's
+/// bump_map and facets).
+class NormalSetter {
+ public:
+  virtual ~NormalSetter() = default;
+  /// The bent normal (pattern space, any length) at pattern point p for the unit normal n (pattern space).
+  virtual Vec3 set_normal(const Vec3& p, const Vec3& n, double bump_size) const = 0;
+};
+
 class BlockPattern {
  public:
   virtual ~BlockPattern() = default;

@@ -83,6 +83,9 @@ Vec3 PatternNormal::perturb(const Vec3& normal, const material::PatternPoint& po
   if (!spec_.normal_map.empty()) return perturb_by_map(normal, point);
   const Vec3 q = spec_.warps.apply(pattern_point(point));
   const Vec3 n = to_pattern_space(spec_.warps, normal);
+  const auto* setter = dynamic_cast<const NormalSetter*>(spec_.pattern.get());
+  if (setter && !spec_.slope_map)
+    return from_pattern_space(spec_.warps, setter->set_normal(q, n, spec_.bump_size));
   return from_pattern_space(spec_.warps, n + bend(q));
 }
 

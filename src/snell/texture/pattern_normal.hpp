@@ -2,6 +2,7 @@
 // `normal { pattern [bump_size] [slope_map | normal_map] [accuracy a] modifiers }` (POV-Ray 3.7 reference,
 // "Normal", "Slope Maps", "Normal Maps"; behaviour as in POV-Ray's normal.cpp):
 // - bumps, dents, wrinkles, ripples and waves bend the normal their own way (texture::BumpSource);
+// - bump_map and facets set the bent normal themselves (texture::NormalSetter);
 // - every other value pattern bends it along minus its gradient, found by finite differences at the
 //   four corners of a tetrahedron `accuracy` across, through the wave and the optional slope map;
 // - a normal_map bends it by the two entries around the pattern's value, blended.
