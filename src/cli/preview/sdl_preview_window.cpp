@@ -2,7 +2,6 @@
 // render's main thread is busy rendering, so the window has a thread of its own: it owns every SDL object,
 // polls events and redraws about 30 times a second from an 8-bit RGB copy of the image that the render
 // threads fill tile by tile under a mutex.
-#include <SDL.h>
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "cli/preview/preview_window.hpp"
+#include "cli/preview/sdl_library.hpp"
 #include "snell/io/png_writer.hpp"
 
 namespace snell::cli {
@@ -35,8 +35,10 @@ constexpr int kMaxImageSide = 16384;
 
 class SdlPreviewWindow final : public PreviewWindow {
  public:
-  SdlPreviewWindow(int width, int height, std::string title, const io::Encoding& encoding)
-      : width_(width),
+  SdlPreviewWindow(const SdlLibrary& sdl, int width, int height, std::string title,
+                   const io::Encoding& encoding)
+      : sdl_(sdl),
+        width_(width),
         height_(height),
         title_(std::move(title)),
         encoding_(encoding),
@@ -93,38 +95,38 @@ class SdlPreviewWindow final : public PreviewWindow {
  private:
   void run(std::promise<std::string>& started) {
     // The window is a plain framebuffer: no OpenGL (loading Mesa costs about a second and needs no GPU here).
-    SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
-    SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
+    sdl_.SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+    sdl_.SetHint(SDL_HINT_RENDER_DRIVER, "software");
     // snell's own SIGINT/SIGTERM handlers (interrupt, resume file) must stay in place.
-    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-      started.set_value(fmt::format("cannot start SDL video: {}", SDL_GetError()));
+    sdl_.SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+    if (sdl_.Init(SDL_INIT_VIDEO) != 0) {
+      started.set_value(fmt::format("cannot start SDL video: {}", sdl_.GetError()));
       return;
     }
     const double scale =
         std::min({1.0, double(kMaxWindowWidth) / width_, double(kMaxWindowHeight) / height_});
     const int window_w = std::max(1, static_cast<int>(width_ * scale));
     const int window_h = std::max(1, static_cast<int>(height_ * scale));
-    SDL_Window* window = SDL_CreateWindow(title_.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
-                                          window_w, window_h, SDL_WINDOW_SHOWN);
+    SDL_Window* window = sdl_.CreateWindow(title_.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
+                                           window_w, window_h, SDL_WINDOW_SHOWN);
     // The software renderer: no GPU needed, and its read-back returns exactly the bytes uploaded.
-    SDL_Renderer* renderer = window ? SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
-    SDL_Texture* texture = renderer ? SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24,
-                                                        SDL_TEXTUREACCESS_STREAMING, width_, height_)
+    SDL_Renderer* renderer = window ? sdl_.CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
+    SDL_Texture* texture = renderer ? sdl_.CreateTexture(renderer, SDL_PIXELFORMAT_RGB24,
+                                                         SDL_TEXTUREACCESS_STREAMING, width_, height_)
                                     : nullptr;
     if (!texture) {
-      started.set_value(fmt::format("cannot open a window: {}", SDL_GetError()));
-      if (renderer) SDL_DestroyRenderer(renderer);
-      if (window) SDL_DestroyWindow(window);
-      SDL_Quit();
+      started.set_value(fmt::format("cannot open a window: {}", sdl_.GetError()));
+      if (renderer) sdl_.DestroyRenderer(renderer);
+      if (window) sdl_.DestroyWindow(window);
+      sdl_.Quit();
       return;
     }
     started.set_value({});
     loop(window, renderer, texture);
-    SDL_DestroyTexture(texture);
-    SDL_DestroyRenderer(renderer);
-    SDL_DestroyWindow(window);
-    SDL_Quit();
+    sdl_.DestroyTexture(texture);
+    sdl_.DestroyRenderer(renderer);
+    sdl_.DestroyWindow(window);
+    sdl_.Quit();
   }
 
   void loop(SDL_Window* window, SDL_Renderer* renderer, SDL_Texture* texture) {
@@ -132,7 +134,7 @@ class SdlPreviewWindow final : public PreviewWindow {
     bool closed = false;
     std::string shown_title;
     for (;;) {
-      for (SDL_Event e; SDL_PollEvent(&e);) {
+      for (SDL_Event e; sdl_.PollEvent(&e);) {
         if (e.type == SDL_KEYDOWN) key_pressed = true;
         if (e.type == SDL_QUIT || (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE))
           closed = true;
@@ -140,23 +142,23 @@ class SdlPreviewWindow final : public PreviewWindow {
       std::unique_lock lock(mutex_);
       const bool finishing = finishing_;
       if (dirty_) {
-        SDL_UpdateTexture(texture, nullptr, pixels_.data(), width_ * 3);
+        sdl_.UpdateTexture(texture, nullptr, pixels_.data(), width_ * 3);
         dirty_ = false;
       }
       const std::string title = title_line(finishing);
       lock.unlock();
-      if (title != shown_title) SDL_SetWindowTitle(window, title.c_str());
+      if (title != shown_title) sdl_.SetWindowTitle(window, title.c_str());
       shown_title = title;
-      SDL_RenderClear(renderer);
-      SDL_RenderCopy(renderer, texture, nullptr, nullptr);
+      sdl_.RenderClear(renderer);
+      sdl_.RenderCopy(renderer, texture, nullptr, nullptr);
       if (finishing && !snapshot_taken_) {
         write_snapshot(renderer);
         snapshot_taken_ = true;
       }
-      SDL_RenderPresent(renderer);
+      sdl_.RenderPresent(renderer);
       // A window the user closed stays closed for the rest of the render; nothing waits for it then.
       if (finishing && (!wait_for_key_ || key_pressed || closed || (stop_waiting_ && *stop_waiting_))) return;
-      if (closed && !finishing) SDL_HideWindow(window);
+      if (closed && !finishing) sdl_.HideWindow(window);
       lock.lock();
       wake_.wait_for(lock, kFramePeriod, [this, finishing] { return finishing_ != finishing; });
     }
@@ -177,16 +179,17 @@ class SdlPreviewWindow final : public PreviewWindow {
   void write_snapshot(SDL_Renderer* renderer) const {
     if (snapshot_.empty()) return;
     int w = 0, h = 0;
-    SDL_GetRendererOutputSize(renderer, &w, &h);
+    sdl_.GetRendererOutputSize(renderer, &w, &h);
     std::vector<uint8_t> shot(static_cast<size_t>(w) * h * 3);
     std::string why;
-    if (SDL_RenderReadPixels(renderer, nullptr, SDL_PIXELFORMAT_RGB24, shot.data(), w * 3) != 0)
-      why = SDL_GetError();
+    if (sdl_.RenderReadPixels(renderer, nullptr, SDL_PIXELFORMAT_RGB24, shot.data(), w * 3) != 0)
+      why = sdl_.GetError();
     else
       why = io::write_png(snapshot_, w, h, 3, 8, shot.data(), true);
     if (!why.empty()) fmt::print(stderr, "snell: warning: cannot write the window snapshot: {}\n", why);
   }
 
+  const SdlLibrary& sdl_;
   const int width_, height_;
   const std::string title_;
   const io::Encoding encoding_;
@@ -222,7 +225,9 @@ std::unique_ptr<PreviewWindow> open_preview_window(int width, int height, const 
     why = fmt::format("the image is larger than {} pixels a side", kMaxImageSide);
     return nullptr;
   }
-  auto window = std::make_unique<SdlPreviewWindow>(width, height, title, encoding);
+  const SdlLibrary* sdl = load_sdl_library(why);
+  if (!sdl) return nullptr;
+  auto window = std::make_unique<SdlPreviewWindow>(*sdl, width, height, title, encoding);
   if (!window->start(why)) return nullptr;
   return window;
 }
