@@ -56,6 +56,7 @@ TEST(PhotonsTest, SlabUnderParallelLightPassesTheFresnelTransmittance) {
   }
   const double r = std::pow(0.5 / 2.5, 2);
   const double expected = 4 * (1 - r) * (1 - r);
+  RecordProperty("deposited_over_expected", std::to_string(sum / expected));
   EXPECT_NEAR(sum / expected, 1.0, 0.01) << shot.photons.size() << " photons";
 }
 
@@ -73,6 +74,7 @@ TEST(PhotonsTest, PhotonsCoverTheSolidAngleOfTheTarget) {
   const double cone = std::asin(std::sqrt(3.0) / 8.0);
   const double cell = std::atan(0.02 / 8.0);
   const double expected = 2 * kPi * (1 - std::cos(cone)) / (cell * cell);
+  RecordProperty("shot_over_expected", std::to_string(static_cast<double>(shot.shot) / expected));
   EXPECT_NEAR(static_cast<double>(shot.shot) / expected, 1.0, 0.01);
 }
 
@@ -100,6 +102,7 @@ TEST(PhotonsTest, GlassSphereFocusesNearTheParaxialFocus) {
     ++n;
   }
   const double focus = sum / n;
+  RecordProperty("focus_y", std::to_string(focus));
   EXPECT_NEAR(focus, -1.5, 0.015);
 }
 
@@ -121,6 +124,7 @@ TEST(PhotonsTest, CausticAtTheFocusOutshinesTheDirectLight) {
   };
   const Color focus = irradiance({0, -1.45, 0});
   const Color aside = irradiance({2.5, -1.45, 0});
+  RecordProperty("focus_irradiance", std::to_string(focus.r));
   EXPECT_GT(focus.r, 10.0);
   EXPECT_LT(aside.r, 0.01);  // no photons outside the sphere's shadow
 }
@@ -146,6 +150,7 @@ TEST(PhotonsTest, RenderedCausticIsBrighterThanTheShadow) {
   const Color with = render_centre("global_settings { photons { spacing 0.01 } }" + scene_text);
   const Color without = render_centre(scene_text);
   EXPECT_NEAR(without.r, 1.0, 1e-6);
+  RecordProperty("caustic_pixel", std::to_string(with.r));
   EXPECT_GT(with.r, 5.0);
 }
 
@@ -182,6 +187,22 @@ TEST(PhotonsTest, PhotonMapIsChargedToTheMemoryBudget) {
   const auto caustics = make_caustics(s, *a);
   EXPECT_EQ(s.memory_budget->used(), caustics->map().memory_bytes());
   EXPECT_GT(caustics->map().memory_bytes(), caustics->map().size() * sizeof(Photon));
+}
+
+TEST(PhotonsTest, SpacingTooFineFailsBeforeShooting) {
+  // About 1e11 directions: refused up front (a clear error, not memory piling up).
+  const scene::Scene s = parse(std::string(R"(
+    global_settings { photons { spacing 0.00001 } }
+    light_source { <0, 8, 0> color rgb 1 photons { refraction on } }
+    sphere { 0, 1 )") + kGlass +
+                               " photons { target } }");
+  const auto a = accel::make_accelerator("bvh", s);
+  try {
+    make_caustics(s, *a);
+    FAIL() << "no error";
+  } catch (const memory::BudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("larger spacing"), std::string::npos) << e.what();
+  }
 }
 
 TEST(PhotonsTest, ParsesThePhotonsBlocks) {

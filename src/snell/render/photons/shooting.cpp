@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "snell/math/constants.hpp"
 #include "snell/math/pcg32.hpp"
+#include "snell/memory/budget.hpp"
 #include "snell/render/light_ray.hpp"
 #include "snell/render/photons/photon_path.hpp"
 
@@ -20,6 +22,8 @@ namespace {
 
 constexpr double kEpsilon = 1e-10;
 constexpr double kPi = 3.14159265358979323846;
+/// More photons than any map could hold (the kd-tree indexes them with 32 bits).
+constexpr double kMostPhotons = 1e9;
 
 /// A target object: all scene objects sharing one PhotonTarget (the parts of a target union).
 struct Target {
@@ -110,11 +114,12 @@ Combo make_combo(const scene::Light& light, const Target& target, double spacing
   return c;
 }
 
-/// Photons one combo would shoot (each ring's count without its random start, which adds at most one).
+/// Photons one combo shoots, about: its rings cover angles up to half a ring past the largest, in cells of
+/// dtheta^2 (solid angle for a point light, area for a parallel one).
 double estimated_photons(const Combo& c) {
-  double n = 0;
-  for (int ring = 0; ring < c.ring_count(); ++ring) n += std::ceil(2 * kPi / c.dphi(ring * c.dtheta));
-  return n;
+  const double reach = c.max_theta + 0.5 * c.dtheta;
+  const double cells = c.parallel ? kPi * reach * reach : 2 * kPi * (1 - std::cos(std::min(reach, kPi)));
+  return cells / (c.dtheta * c.dtheta);
 }
 
 struct Ring {
@@ -202,6 +207,16 @@ ShootingResult shoot_caustic_photons(const scene::Scene& scene, const accel::Acc
       combos = combos_at(result.spacing);
     }
   }
+
+  // Charge at least a photon per direction before shooting, so that a spacing far too fine for the memory
+  // budget fails here rather than while the photons pile up.
+  double planned = 0;
+  for (const Combo& c : combos) planned += estimated_photons(c);
+  if (!(planned < kMostPhotons))
+    throw memory::BudgetExceeded("photons: the spacing would shoot about " + std::to_string(planned) +
+                                 " photons; use a larger spacing or a smaller count");
+  const memory::Charge planned_charge(scene.memory_budget, static_cast<uint64_t>(planned) * sizeof(Photon),
+                                      "photon map");
 
   for (const Combo& c : combos) {
     const InteriorStack inside = c.parallel ? InteriorStack{} : objects_around(scene, c.light->position);
