@@ -108,7 +108,7 @@ TEST(SdlTextureMap, TilesWithTile2IsACheckerOfTextures) {
   const scene::Scene s = sdl::test::parse(R"(
     plane { y, 0 texture { tiles { texture { pigment { rgb 1 } } tile2 texture { pigment { rgb 0 } } } } })");
   const material::Texture& t = texture_of(s);
-  // POV-Ray 3.7 renders tile2 (black) at <0.5, 0, 0.5> (an even cell) and the first texture on odd cells.
+  // POV-Ray's Parse_Tiles: the first texture on odd cells, tile2 on even ones (tiles_texture_test.cpp).
   EXPECT_NEAR(t.pigment_at({0.5, 0.5, 0.5}, {0, 1, 0}, {}).rgb.r, 0.0, 1e-12);
   EXPECT_NEAR(t.pigment_at({1.5, 0.5, 0.5}, {0, 1, 0}, {}).rgb.r, 1.0, 1e-12);
 }

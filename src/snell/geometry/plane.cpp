@@ -15,6 +15,15 @@ Plane::Plane(const Vec3& normal, double distance) {
   if (len < 1e-10) throw std::invalid_argument("plane: degenerate plane normal");
   normal_ = normal / len;
   distance_ = distance;
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    if (normal_[b] != 0 || normal_[c] != 0) continue;
+    // n.p < d with n = +-e_a: p_a < d, or p_a > -d.
+    if (normal_[a] > 0)
+      bounds_.hi[a] = distance_;
+    else
+      bounds_.lo[a] = -distance_;
+  }
 }
 
 bool Plane::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {

@@ -9,7 +9,9 @@ class Plane final : public Shape {
  public:
   Plane(const Vec3& normal, double distance);
 
-  Bounds3 bounds() const override { return Bounds3::infinite(); }
+  /// The half-space of the inside when the normal lies along an axis (it holds the surface too), as POV-Ray
+  /// bounds such planes in a CSG intersection (quadric.cpp, Compute_Plane_Min_Max); else everything.
+  Bounds3 bounds() const override { return bounds_; }
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override { return dot(normal_, p) < distance_; }
@@ -21,6 +23,7 @@ class Plane final : public Shape {
  private:
   Vec3 normal_;
   double distance_;
+  Bounds3 bounds_ = Bounds3::infinite();
 };
 
 }  // namespace snell::geometry

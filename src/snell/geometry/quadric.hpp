@@ -12,6 +12,9 @@ class Quadric final : public Shape {
   Quadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear, double constant);
 
   Bounds3 bounds() const override { return bounds_; }
+  /// For a quadric without mixed terms, the box of its inside within `box` by interval arithmetic
+  /// (quadric_bounds.cpp): an infinite cylinder or a hyperboloid cut by planes gets finite bounds.
+  Bounds3 inside_bounds_within(const Bounds3& box) const override;
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override { return value(p) < 0; }

@@ -36,6 +36,10 @@ class Shape {
 
   /// Bounds in shape space; `Bounds3::infinite()` for unbounded shapes such as planes.
   virtual Bounds3 bounds() const = 0;
+  /// Bounds of the part of the inside that lies in `box` (shape space): a CSG intersection confines
+  /// unbounded children with the others' boxes (POV-Ray csg.cpp, CSG::Compute_BBox). By default the
+  /// shape's own bounds cut by the box.
+  virtual Bounds3 inside_bounds_within(const Bounds3& box) const { return bounds().intersection(box); }
   /// Nearest crossing with t in (t_min, t_max). Returns false when there is none.
   virtual bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const = 0;
   /// Appends every crossing with t in (t_min, t_max), in increasing t (for CSG and filtered shadows).

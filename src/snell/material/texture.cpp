@@ -60,23 +60,32 @@ Rgbft layer_pigment(const Texture& layer, const math::Vec3& world_point, const m
 
 math::Vec3 Texture::shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
                                    const math::Vec2& uv) const {
-  for (const Texture* layer = this; layer; layer = layer->below.get()) {
-    if (!layer->normal && !layer->selector) continue;
-    const math::Vec3 local = normalize(layer->transform.inverse_normal(world_normal));
-    const PatternPoint pp = layer_point(*layer, world_point, world_normal, uv);
-    math::Vec3 bent;
-    if (layer->selector) {
-      // Each entry bends the normal in its own way; POV-Ray blends the results like colours.
-      const TextureSelector::Choice c = layer->selector->at(pp);
-      bent = c.first->shading_normal(pp.p, local, uv);
-      if (c.second) bent = bent * (1 - c.weight) + c.second->shading_normal(pp.p, local, uv) * c.weight;
-    } else {
-      bent = layer->normal->perturb(local, pp);
-    }
-    bent = layer->transform.normal(bent);
-    return dot(bent, bent) > 0 ? normalize(bent) : world_normal;
-  }
+  for (const Texture* layer = this; layer; layer = layer->below.get())
+    if (layer->normal || layer->selector) return layer->own_shading_normal(world_point, world_normal, uv);
   return world_normal;
+}
+
+Rgbft Texture::own_pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
+                              const math::Vec2& uv) const {
+  return layer_pigment(*this, world_point, world_normal, uv);
+}
+
+math::Vec3 Texture::own_shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
+                                       const math::Vec2& uv) const {
+  if (!normal && !selector) return world_normal;
+  const math::Vec3 local = normalize(transform.inverse_normal(world_normal));
+  const PatternPoint pp = layer_point(*this, world_point, world_normal, uv);
+  math::Vec3 bent;
+  if (selector) {
+    // Each entry bends the normal in its own way; POV-Ray blends the results like colours.
+    const TextureSelector::Choice c = selector->at(pp);
+    bent = c.first->shading_normal(pp.p, local, uv);
+    if (c.second) bent = bent * (1 - c.weight) + c.second->shading_normal(pp.p, local, uv) * c.weight;
+  } else {
+    bent = normal->perturb(local, pp);
+  }
+  bent = transform.normal(bent);
+  return dot(bent, bent) > 0 ? normalize(bent) : world_normal;
 }
 
 const Finish& Texture::finish_at(const math::Vec3& world_point) const {

@@ -55,6 +55,14 @@ struct Texture {
   math::Vec3 shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
                             const math::Vec2& uv) const;
 
+  /// This layer alone, without the layers below: its pigment, and `world_normal` bent by its own
+  /// `normal {}` (unchanged without one). POV-Ray lights each layer with its own finish and normal
+  /// (trace.cpp, ComputeLightedTexture), which render/layered_shading.cpp follows.
+  Rgbft own_pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
+                       const math::Vec2& uv) const;
+  math::Vec3 own_shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
+                                const math::Vec2& uv) const;
+
   /// The finish at a world point: this layer's own, or for a texture map the finish of the entry that
   /// weighs most there (finishes are not blended).
   const Finish& finish_at(const math::Vec3& world_point) const;

@@ -1,5 +1,6 @@
 #include "snell/math/transform.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "snell/math/constants.hpp"
@@ -108,10 +109,29 @@ Vec3 Transform::inverse_vector(const Vec3& v) const { return identity_ ? v : app
 Vec3 Transform::inverse_normal(const Vec3& n) const { return identity_ ? n : apply_transposed_vector(m_, n); }
 
 Bounds3 Transform::bounds(const Bounds3& b) const {
-  if (identity_ || b.empty() || !b.is_finite()) return identity_ || b.empty() ? b : Bounds3::infinite();
+  if (identity_ || b.empty()) return b;
+  if (b.is_finite()) {
+    Bounds3 r;
+    for (int i = 0; i < 8; ++i)
+      r.unite(point({(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z}));
+    return r;
+  }
+  // A box unbounded on some axes (a half-space, an infinite cylinder): each output axis is the sum of the
+  // intervals m_ij [lo_j, hi_j] (Arvo, "Transforming axis-aligned bounding boxes", Graphics Gems 1990),
+  // where a zero coefficient takes nothing from an infinite side instead of 0 * inf.
   Bounds3 r;
-  for (int i = 0; i < 8; ++i)
-    r.unite(point({(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z}));
+  for (int i = 0; i < 3; ++i) {
+    double lo = m_.m[i][3], hi = m_.m[i][3];
+    for (int j = 0; j < 3; ++j) {
+      const double c = m_.m[i][j];
+      if (c == 0) continue;
+      const double a = c * b.lo[j], e = c * b.hi[j];
+      lo += std::min(a, e);
+      hi += std::max(a, e);
+    }
+    r.lo[i] = lo;
+    r.hi[i] = hi;
+  }
   return r;
 }
 

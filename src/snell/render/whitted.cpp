@@ -10,6 +10,7 @@
 #include "snell/render/media.hpp"
 #include "snell/render/optics.hpp"
 #include "snell/render/subsurface.hpp"
+#include "snell/render/whitted_shading_point.hpp"
 
 namespace snell::render {
 
@@ -46,11 +47,6 @@ Color metallic_tint(double metallic, const Color& pigment, double cos_angle) {
   return Color(1) + (metallic * (1 - f)) * (pigment - Color(1));
 }
 
-/// The transmitted colour of a surface colour: filter passes light tinted, transmit untinted.
-Color transmitted_color(const material::Rgbft& c) {
-  return c.rgb * c.filter + Color(c.transmit);
-}
-
 double max_abs(const Color& c) {
   return std::max(std::fabs(c.r), std::max(std::fabs(c.g), std::fabs(c.b)));
 }
@@ -75,23 +71,6 @@ Vec3 offset_origin(const Vec3& p, const Vec3& side) {
   const double scale = kAbsoluteOffset + kRelativeOffset * max_component(abs(p));
   return p + (dot(side, side) > 0 ? normalize(side) : side) * scale;
 }
-
-struct WhittedIntegrator::ShadingPoint {
-  const Ray* ray;
-  const scene::SurfaceHit* hit;
-  const material::Finish* finish;
-  Vec3 point;
-  /// Geometric and shading normals, both turned to face the incoming ray.
-  Vec3 raw_normal;
-  Vec3 normal;
-  material::Rgbft pigment;
-  /// How much of the surface's own colour shows (POV-Ray's "att": less when transparent).
-  double opacity = 1;
-  TraceObserver* observer = nullptr;
-  /// Phong and specular highlights; off for radiosity's gather rays (trace.cpp, ComputeOneLightRay: "too
-  /// bright" otherwise).
-  bool highlights = true;
-};
 
 WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)
     : scene_(scene), accel_(accelerator) {
@@ -213,15 +192,15 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   if (dot(shape_normal, ray.direction) > 0) shape_normal = sp.raw_normal;
   // The texture's normal then bends the oriented normal, as POV-Ray perturbs its flipped raw normal
   // (trace.cpp: layNormal = rawnormal; Perturb_Normal); a bump may face away, and it keeps it.
-  sp.normal = hit.object->texture->shading_normal(hit.texture_point, shape_normal, hit.uv);
-  sp.pigment = pigment_at(hit);
+  // The top layer's own normal and pigment; layers below are lit on their own (layered_shading.cpp).
+  const material::Texture& texture = *hit.object->texture;
+  sp.normal = texture.own_shading_normal(hit.texture_point, shape_normal, hit.uv);
+  sp.pigment = texture.own_pigment_at(hit.texture_point, hit.normal, hit.uv);
   sp.observer = context.observer;
   sp.highlights = context.radiosity_depth == 0;
   const material::Rgbft& pc = sp.pigment;
   const material::Finish& f = *sp.finish;
-  // Opacity: 3.7 scales filter by the brightest channel (a black filter blocks); older versions do not.
-  sp.opacity = scene_.settings.language_version < 3.7 ? 1.0 - pc.filter - pc.transmit
-                                                      : 1.0 - pc.filter * pc.rgb.max() - pc.transmit;
+  sp.opacity = opacity_of(pc, scene_.settings.language_version);
 
   // Interiors are tracked per solid: the CSG object for a hit on one of its children.
   const scene::Object* object = hit.solid ? hit.solid : hit.object;
@@ -235,54 +214,9 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
       relative_ior = object_ior / ior_of(inside.back());
   }
 
-  // Reflectivity (trace.cpp, ComputeReflectivity / ComputeMetallic).
-  const double cos_i = -dot(ray.direction, sp.normal);
   double reflect_weight = weight;
-  Color reflectivity;
-  if (f.reflects()) {
-    if (f.reflection_fresnel) {
-      const double fr = std::clamp(fresnel_dielectric(cos_i, 1.0, relative_ior), 0.0, 1.0);
-      reflectivity = fr * f.reflection_max + (1 - fr) * f.reflection_min;
-      reflect_weight *= reflectivity.max();
-    } else {
-      reflect_weight *= std::max(f.reflection_max.max(), f.reflection_min.max());
-      const double frac = std::fabs(f.reflection_falloff - 1) > kEpsilon
-                              ? std::pow(std::max(0.0, 1 - cos_i), f.reflection_falloff)
-                              : 1 - cos_i;
-      if (std::fabs(frac) < kEpsilon)
-        reflectivity = f.reflection_min;
-      else if (std::fabs(frac - 1) < kEpsilon)
-        reflectivity = f.reflection_max;
-      else
-        reflectivity = frac * f.reflection_max + (1 - frac) * f.reflection_min;
-    }
-    if (f.reflection_metallic > 0) reflectivity *= metallic_tint(f.reflection_metallic, pc.rgb, cos_i);
-  }
-
-  // Emission and classic ambient, then the light sources.
-  // With radiosity, 3.7 scenes drop `ambient` and gather the ambient light (trace.cpp,
-  // ComputeLightedTexture), skipped where it could not reach adc_bailout.
-  const bool classic_ambient = !radiosity_ || scene_.settings.language_version < 3.7;
-  const Color ambient = classic_ambient ? f.ambient * scene_.settings.ambient_light : Color(0);
-  Color result = pc.rgb * (f.emission + ambient) * sp.opacity;
-  if (sp.observer) report_own_light(*sp.observer, pc.rgb * sp.opacity, f, scene_.settings.ambient_light);
-  const double most_indirect = pc.rgb.grey() * sp.opacity * f.diffuse;
-  if (radiosity_ && radiosity_->gathers_at(context.radiosity_depth) &&
-      most_indirect > scene_.settings.adc_bailout) {
-    const Vec3 around = radiosity_->settings().normal ? sp.normal : sp.raw_normal;
-    const Color gathered = radiosity_->ambient(
-        sp.point, around, weight * most_indirect, context, [&](const Vec3& dir, int at_level, double w) {
-          return trace({offset_origin(sp.point, around), dir, ray.time}, RayKind::reflection, at_level, w,
-                       inside, context);
-        });
-    result += pc.rgb * gathered * (f.diffuse * sp.opacity);
-  }
-  if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
-  if (caustics_ && (f.diffuse != 0 || f.specular != 0 || f.phong != 0))
-    result +=
-        caustics_->radiance(*object, sp.point, sp.raw_normal, sp.normal,
-                            [&](const Vec3& dir, const Color& c) { return surface_response(sp, dir, c); });
-  if (f.subsurface) result += subsurface_light(sp, object, relative_ior, context);
+  const Color reflectivity = reflectivity_of(sp, relative_ior, reflect_weight);
+  Color result = own_light(sp, object, relative_ior, level, weight, inside, context);
 
   // Light through the surface (trace.cpp: filCol, trans).
   Color filter = transmitted_color(pc);
@@ -290,6 +224,8 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
     const Color keep = Color(1) - reflectivity;
     filter *= Color(std::min(1.0, keep.r), std::min(1.0, keep.g), std::min(1.0, keep.b));
   }
+  if (texture.below)
+    result += lower_layers(sp, shape_normal, object, relative_ior, level, weight, inside, context, filter);
   const double trans = std::min(1.0, std::fabs(filter.grey()));
 
   bool tir = false;
@@ -364,6 +300,64 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
     result += reflected;
     if (sp.observer) sp.observer->term(RayTerm::reflected, reflectivity, reflected);
   }
+  return result;
+}
+
+Color WhittedIntegrator::reflectivity_of(const ShadingPoint& sp, double relative_ior, double& weight) const {
+  // Reflectivity (trace.cpp, ComputeReflectivity / ComputeMetallic).
+  const material::Finish& f = *sp.finish;
+  if (!f.reflects()) return Color(0);
+  const double cos_i = -dot(sp.ray->direction, sp.normal);
+  Color reflectivity;
+  if (f.reflection_fresnel) {
+    const double fr = std::clamp(fresnel_dielectric(cos_i, 1.0, relative_ior), 0.0, 1.0);
+    reflectivity = fr * f.reflection_max + (1 - fr) * f.reflection_min;
+    weight *= reflectivity.max();
+  } else {
+    weight *= std::max(f.reflection_max.max(), f.reflection_min.max());
+    const double frac = std::fabs(f.reflection_falloff - 1) > kEpsilon
+                            ? std::pow(std::max(0.0, 1 - cos_i), f.reflection_falloff)
+                            : 1 - cos_i;
+    if (std::fabs(frac) < kEpsilon)
+      reflectivity = f.reflection_min;
+    else if (std::fabs(frac - 1) < kEpsilon)
+      reflectivity = f.reflection_max;
+    else
+      reflectivity = frac * f.reflection_max + (1 - frac) * f.reflection_min;
+  }
+  if (f.reflection_metallic > 0) reflectivity *= metallic_tint(f.reflection_metallic, sp.pigment.rgb, cos_i);
+  return reflectivity;
+}
+
+Color WhittedIntegrator::own_light(const ShadingPoint& sp, const scene::Object* object, double relative_ior,
+                                   int level, double weight, const InteriorStack& inside,
+                                   TraceContext& context) const {
+  const material::Finish& f = *sp.finish;
+  const material::Rgbft& pc = sp.pigment;
+  // Emission and classic ambient, then the light sources.
+  // With radiosity, 3.7 scenes drop `ambient` and gather the ambient light (trace.cpp,
+  // ComputeLightedTexture), skipped where it could not reach adc_bailout.
+  const bool classic_ambient = !radiosity_ || scene_.settings.language_version < 3.7;
+  const Color ambient = classic_ambient ? f.ambient * scene_.settings.ambient_light : Color(0);
+  Color result = pc.rgb * (f.emission + ambient) * sp.opacity;
+  if (sp.observer) report_own_light(*sp.observer, pc.rgb * sp.opacity, f, scene_.settings.ambient_light);
+  const double most_indirect = pc.rgb.grey() * sp.opacity * f.diffuse;
+  if (radiosity_ && radiosity_->gathers_at(context.radiosity_depth) &&
+      most_indirect > scene_.settings.adc_bailout) {
+    const Vec3 around = radiosity_->settings().normal ? sp.normal : sp.raw_normal;
+    const Color gathered = radiosity_->ambient(
+        sp.point, around, weight * most_indirect, context, [&](const Vec3& dir, int at_level, double w) {
+          return trace({offset_origin(sp.point, around), dir, sp.ray->time}, RayKind::reflection, at_level, w,
+                       inside, context);
+        });
+    result += pc.rgb * gathered * (f.diffuse * sp.opacity);
+  }
+  if (f.diffuse != 0 || f.specular != 0 || f.phong != 0) result += direct_light(sp, context);
+  if (caustics_ && (f.diffuse != 0 || f.specular != 0 || f.phong != 0))
+    result +=
+        caustics_->radiance(*object, sp.point, sp.raw_normal, sp.normal,
+                            [&](const Vec3& dir, const Color& c) { return surface_response(sp, dir, c); });
+  if (f.subsurface) result += subsurface_light(sp, object, relative_ior, context);
   return result;
 }
 

@@ -39,6 +39,17 @@ class WhittedIntegrator final : public Integrator {
   struct ShadingPoint;
   math::Color shade(const math::Ray& ray, const scene::SurfaceHit& hit, int level, double weight,
                     const InteriorStack& inside, TraceContext& context) const;
+  /// How much the surface reflects (POV-Ray's reflectivity with fresnel, falloff and metallic); scales
+  /// `weight` by the most it can reflect.
+  math::Color reflectivity_of(const ShadingPoint& sp, double relative_ior, double& weight) const;
+  /// The surface's own light towards the eye: emission, ambient or radiosity, the light sources.
+  math::Color own_light(const ShadingPoint& sp, const scene::Object* object, double relative_ior, int level,
+                        double weight, const InteriorStack& inside, TraceContext& context) const;
+  /// Layers under the top one of a layered texture, each lit with its own finish and normal and seen
+  /// through the layers above (`filter`, which they narrow in turn); their reflections included.
+  math::Color lower_layers(const ShadingPoint& top, const math::Vec3& shape_normal,
+                           const scene::Object* object, double relative_ior, int level, double weight,
+                           const InteriorStack& inside, TraceContext& context, math::Color& filter) const;
   math::Color direct_light(const ShadingPoint& sp, TraceContext& context) const;
   /// Mean light through an area light's shadow rays; `centre` is the ray to its centre, with its colour.
   math::Color area_shadow(const ShadingPoint& sp, const scene::Light& light, const LightRay& centre,

@@ -19,7 +19,10 @@ void WhittedIntegrator::begin_tile(TraceContext& context) const {
 
 std::string WhittedIntegrator::summary() const {
   std::string lines = radiosity_ ? radiosity_->summary() : std::string{};
-  if (caustics_) lines += (lines.empty() ? "" : "\n") + caustics_->summary();
+  if (caustics_) {
+    if (!lines.empty()) lines.push_back('\n');
+    lines.append(caustics_->summary());
+  }
   return lines;
 }
 

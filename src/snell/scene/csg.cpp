@@ -1,11 +1,30 @@
 #include "snell/scene/csg.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "snell/scene/object.hpp"
 
 namespace snell::scene {
+
+namespace {
+
+/// `b` grown by a margin well above the rounding of hit points on its faces (relative 1e-7 of the
+/// coordinates, as intersection routines in double keep more than 9 digits), so that a hit exactly on a
+/// bounding face is never clipped away. Infinite sides stay infinite.
+math::Bounds3 padded(const math::Bounds3& b) {
+  if (b.empty()) return b;
+  math::Bounds3 r = b;
+  for (int a = 0; a < 3; ++a) {
+    const double lo = b.lo[a], hi = b.hi[a];
+    if (std::isfinite(lo)) r.lo[a] = lo - (1e-7 + 1e-7 * std::fabs(lo));
+    if (std::isfinite(hi)) r.hi[a] = hi + (1e-7 + 1e-7 * std::fabs(hi));
+  }
+  return r;
+}
+
+}  // namespace
 
 Csg::Csg(CsgKind kind, std::vector<std::shared_ptr<const Object>> children, size_t surface_children)
     : kind_(kind), children_(std::move(children)) {
@@ -16,6 +35,10 @@ Csg::Csg(CsgKind kind, std::vector<std::shared_ptr<const Object>> children, size
   if (kind_ == CsgKind::intersection) {
     solid_bounds_ = math::Bounds3::infinite();
     for (const auto& c : children_) solid_bounds_ = solid_bounds_.intersection(c->solid_bounds());
+    // Unbounded children (quadrics, planes at an angle) confined to what the others allow, twice so
+    // that a child confined late can still narrow one before it.
+    for (int pass = 0; pass < 2 && !solid_bounds_.empty(); ++pass)
+      for (const auto& c : children_) solid_bounds_ = c->solid_bounds_within(solid_bounds_);
     for (size_t i = 0; i < surface_children_; ++i) bounds_.unite(children_[i]->world_bounds());
     bounds_ = bounds_.intersection(solid_bounds_);
   } else {
@@ -24,6 +47,19 @@ Csg::Csg(CsgKind kind, std::vector<std::shared_ptr<const Object>> children, size
       solid_bounds_.unite(c->solid_bounds());
     }
   }
+  clip_bounds_ = padded(bounds_);
+  for (size_t i = 0; i < surface_children_; ++i)
+    child_clip_bounds_.push_back(padded(children_[i]->world_bounds()));
+}
+
+bool Csg::clip_to_bounds(const math::Ray& ray, double& t_min, double& t_max) const {
+  if (clip_bounds_.empty()) return false;
+  return clip_bounds_.clip(ray, t_min, t_max);
+}
+
+bool Csg::may_hit_child(size_t i, const math::Ray& ray, double t_min, double t_max) const {
+  const math::Bounds3& b = child_clip_bounds_[i];
+  return !b.empty() && b.clip(ray, t_min, t_max);
 }
 
 bool Csg::keeps(size_t i, const math::Vec3& p, double time) const {
@@ -44,8 +80,10 @@ bool Csg::keeps(size_t i, const math::Vec3& p, double time) const {
 
 bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
   bool found = false;
+  if (!clip_to_bounds(ray, t_min, t_max)) return false;
   std::vector<SurfaceHit> hits;
   for (size_t i = 0; i < surface_children_; ++i) {
+    if (!may_hit_child(i, ray, t_min, t_max)) continue;
     const Object& child = *children_[i];
     if (kind_ == CsgKind::union_of) {
       if (child.intersect(ray, t_min, t_max, hit)) {
@@ -69,8 +107,10 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
 
 void Csg::all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
   const size_t first = hits.size();
+  if (!clip_to_bounds(ray, t_min, t_max)) return;
   std::vector<SurfaceHit> mine;
   for (size_t i = 0; i < surface_children_; ++i) {
+    if (!may_hit_child(i, ray, t_min, t_max)) continue;
     mine.clear();
     children_[i]->all_hits(ray, t_min, t_max, mine);
     for (const SurfaceHit& h : mine)

@@ -48,11 +48,21 @@ class Csg {
   /// Whether a hit on child `i` at `p` is a surface of the combined solid.
   bool keeps(size_t i, const math::Vec3& p, double time) const;
 
+  /// Narrows (t_min, t_max) to the padded bounds of the combined object; false when the ray misses them.
+  bool clip_to_bounds(const math::Ray& ray, double& t_min, double& t_max) const;
+  /// Whether the ray over (t_min, t_max) can meet surface child `i` (its padded world bounds).
+  bool may_hit_child(size_t i, const math::Ray& ray, double t_min, double t_max) const;
+
   CsgKind kind_;
   std::vector<std::shared_ptr<const Object>> children_;
   size_t surface_children_;
   math::Bounds3 bounds_;
   math::Bounds3 solid_bounds_;
+  /// Slightly grown copies of bounds_ and of the surface children's world bounds, computed once: rays
+  /// are clipped to them before any child is intersected (POV-Ray's csg.cpp tests each child's bounding
+  /// box the same way), so that unbounded children (planes) are only solved where the object can be.
+  math::Bounds3 clip_bounds_;
+  std::vector<math::Bounds3> child_clip_bounds_;
 };
 
 }  // namespace snell::scene

@@ -97,6 +97,13 @@ math::Bounds3 Object::solid_bounds() const {
   return csg ? csg->solid_bounds() : world_bounds();
 }
 
+math::Bounds3 Object::solid_bounds_within(const math::Bounds3& box) const {
+  const math::Bounds3 whole = solid_bounds().intersection(box);
+  if (flags.inverse || motion || csg || whole.empty()) return whole;
+  const math::Bounds3 local_box = transform.inverse().bounds(box);
+  return transform.bounds(shape->inside_bounds_within(local_box)).intersection(whole);
+}
+
 bool Object::inside(const Vec3& world_point, double time) const {
   Vec3 p = world_point;
   if (motion) {

@@ -89,6 +89,9 @@ struct Object {
   bool inside(const Vec3& world_point, double time = 0) const;
   /// Bounds of the points `inside` accepts (infinite for inverted objects), for CSG bounds.
   math::Bounds3 solid_bounds() const;
+  /// Bounds of the inside's part within `box` (world space): tighter than solid_bounds() for unbounded
+  /// shapes that the box confines (a quadric between planes), for CSG intersection bounds.
+  math::Bounds3 solid_bounds_within(const math::Bounds3& box) const;
   bool visible_to(RayKind kind) const {
     switch (kind) {
       case RayKind::camera:
