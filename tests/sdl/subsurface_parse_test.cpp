@@ -13,6 +13,7 @@ TEST(SdlSubsurface, FinishAndGlobalSettingsAreRead) {
     sphere { 0, 1 pigment { rgb 1 } finish { subsurface { material "Marble" samples 10, 2 } } })");
   EXPECT_DOUBLE_EQ(s.settings.mm_per_unit, 40);
   EXPECT_EQ(s.settings.subsurface_samples, 400);
+  EXPECT_EQ(s.settings.subsurface_single_samples, 40);
   const auto& f0 = s.objects[0]->texture->finish;
   EXPECT_TRUE(f0.subsurface);
   EXPECT_DOUBLE_EQ(f0.subsurface_translucency.g, 0.3811);

@@ -15,10 +15,12 @@ namespace snell::io {
 /// when neither is known.
 std::string image_format_for(std::string_view head, const std::filesystem::path& extension);
 
-/// Most pixels a header may claim (8192 x 8192). OpenImageIO's GIF reader allocates and clears the whole
-/// logical screen while opening, before any pixel is read: a damaged 61-byte GIF claiming 8320 x 24887
-/// spent 10 to 20 s there (fuzz/corpus/image/slow/), so such headers are refused before the plugin sees them.
-inline constexpr long long kMaxClaimedPixels = 1LL << 26;
+/// Most pixels a GIF, Targa or BMP header may claim (4096 x 4096). OpenImageIO's GIF reader allocates and
+/// clears the whole logical screen while opening, before any pixel is read, and the plugin then holds two
+/// float copies: a damaged 61-byte GIF claiming 8320 x 24887 spent 10 to 20 s there
+/// (fuzz/corpus/image/slow/), and a 46-byte one claiming 7679 x 7453 passed libFuzzer's 25 s limit and
+/// would have needed 2 GB (png/regressions/gif-canvas-7679x7453). Such headers are refused first.
+inline constexpr long long kMaxClaimedPixels = 1LL << 24;
 
 /// The pixel count the fixed-layout header of a GIF (logical screen), Targa or BMP file claims, read from
 /// its first bytes `head` (at least 26 for BMP); -1 for other formats or a header too short to say.

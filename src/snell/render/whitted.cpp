@@ -10,6 +10,7 @@
 #include "snell/render/media.hpp"
 #include "snell/render/optics.hpp"
 #include "snell/render/subsurface.hpp"
+#include "snell/render/subsurface_povray.hpp"
 #include "snell/render/whitted_shading_point.hpp"
 
 namespace snell::render {
@@ -486,6 +487,8 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
 
 Color WhittedIntegrator::subsurface_light(const ShadingPoint& sp, const scene::Object* solid,
                                           double relative_ior, TraceContext& context) const {
+  // POV-Ray's `translucency` finishes follow POV-Ray's own estimate; snell's measured materials the dipole.
+  if (!sp.finish->subsurface_material) return povray_subsurface_light(sp, solid, relative_ior, context);
   // Light entering around the point from the light sources (POV-Ray 3.7: ComputeSubsurfaceScattering's
   // diffuse part; area lights count from their centre here).
   SubsurfaceQuery query;
@@ -506,6 +509,33 @@ Color WhittedIntegrator::subsurface_light(const ShadingPoint& sp, const scene::O
     return e;
   };
   return subsurface_radiance(query, accel_, context.rng, irradiance) * sp.opacity;
+}
+
+Color WhittedIntegrator::povray_subsurface_light(const ShadingPoint& sp, const scene::Object* solid,
+                                                 double relative_ior, TraceContext& context) const {
+  PovraySubsurfaceQuery query;
+  query.solid = solid;
+  query.point = sp.point;
+  query.normal = sp.raw_normal;
+  query.to_viewer = -sp.ray->direction;
+  query.reflectance = sp.pigment.rgb * sp.finish->diffuse;
+  query.translucency = sp.finish->subsurface_translucency;
+  query.ior = std::max(relative_ior, 1.0 / relative_ior);
+  query.mm_per_unit = scene_.settings.mm_per_unit;
+  query.diffuse_samples = scene_.settings.subsurface_samples;
+  query.single_samples = scene_.settings.subsurface_single_samples;
+  // One entry per light, in scene order (the single-scattering term pairs them up by index).
+  const auto lights = [&](const Vec3& point, const Vec3& normal, std::vector<IncidentLight>& out) {
+    for (const scene::Light& light : scene_.lights) {
+      const LightRay lr = light_ray(light, point);
+      const Vec3 facing = dot(normal, lr.direction) >= 0 ? normal : -normal;
+      const bool lit = max_abs(lr.color) >= kEpsilon;
+      out.push_back({lr.direction, !lit || light.shadowless
+                                       ? (lit ? lr.color : Color(0))
+                                       : shadowed(light, point, facing, lr, lr.color, context)});
+    }
+  };
+  return povray_subsurface_radiance(query, accel_, context.rng, lights) * sp.opacity;
 }
 
 Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, const Vec3& dir,

@@ -62,6 +62,9 @@ class WhittedIntegrator final : public Integrator {
   /// Diffuse light re-emitted by a `subsurface` finish (render/subsurface.hpp), replacing the diffuse term.
   math::Color subsurface_light(const ShadingPoint& sp, const scene::Object* solid, double relative_ior,
                                TraceContext& context) const;
+  /// The same for POV-Ray's `translucency` finishes, as POV-Ray estimates it (subsurface_povray.hpp).
+  math::Color povray_subsurface_light(const ShadingPoint& sp, const scene::Object* solid, double relative_ior,
+                                      TraceContext& context) const;
   /// `seen` at `depth` along the ray as it reaches the ray's origin through media and fog.
   math::Color through_atmosphere(const math::Ray& ray, double depth, const InteriorStack& inside,
                                  math::Color seen, TraceContext& context) const;

@@ -36,9 +36,11 @@ struct GlobalSettings {
   double language_version = 3.7;
   /// `mm_per_unit` (default 10) and `subsurface { samples N, M }`: the scale of subsurface scattering and
   /// the number of diffuse probe samples per shading point (POV-Ray 3.7 reference, "Subsurface Light
-  /// Transport"; the second count, single scattering, is read and not used).
+  /// Transport"; the second count, single scattering, is used by POV-Ray's translucency estimate,
+  /// render/subsurface_povray.hpp).
   double mm_per_unit = 10;
   int subsurface_samples = 50;
+  int subsurface_single_samples = 50;
 };
 
 /// POV-Ray `sky_sphere {}`: pigments seen in the direction of every ray that hits nothing, the first one

@@ -127,6 +127,9 @@ void Parser::parse_reflection(material::Finish& f) {
     const Token t = peek();
     if (t.is_symbol("}")) {
       raw_next();
+      // With fresnel, one colour is the most reflection and the least is zero (POV-Ray 3.7
+      // parser_materials.cpp, end of Parse_Finish: equal min and max are cleared to min = 0).
+      if (f.reflection_fresnel && f.reflection_min == f.reflection_max) f.reflection_min = math::Color(0);
       return;
     }
     if (t.is_symbol(",")) {

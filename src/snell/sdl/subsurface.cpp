@@ -40,7 +40,8 @@ void Parser::parse_global_subsurface() {
     if (t.is_word("samples")) {
       scene_.settings.subsurface_samples = parse_int("subsurface samples", 1, 100000);
       if (peek().is_symbol(",")) raw_next();
-      if (starts_numeric()) parse_float();
+      if (starts_numeric())
+        scene_.settings.subsurface_single_samples = parse_int("subsurface single samples", 1, 100000);
     } else if (t.is_word("radiosity")) {
       parse_bool_optional(true);
     } else {
