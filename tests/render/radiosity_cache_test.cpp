@@ -9,6 +9,7 @@
 #include "scene_builder.hpp"
 #include "snell/accel/accelerator.hpp"
 #include "snell/math/pcg32.hpp"
+#include "snell/memory/budget.hpp"
 #include "snell/render/radiosity/record_grid.hpp"
 #include "snell/render/renderer.hpp"
 
@@ -170,6 +171,18 @@ TEST(RadiosityCacheTest, SameImageForOneTwoAndThreeThreads) {
       ASSERT_EQ(one.image.at(x, y), two.image.at(x, y)) << x << "," << y;
       ASSERT_EQ(one.image.at(x, y), three.image.at(x, y)) << x << "," << y;
     }
+}
+
+TEST(RadiosityCacheTest, CacheStopsGrowingAtTheMemoryLimit) {
+  // --max-memory: the cache is charged record by record; past the limit it stops growing (the render
+  // goes on, gathering where records are missing) and gives everything back at the end.
+  scene::Scene s = sphere_on_floor(20, 1.8);
+  s.memory_budget = std::make_shared<memory::Budget>(8192);
+  const RenderResult r = render(s, 40, 30, 2);
+  EXPECT_NE(r.integrator_summary.find("stopped at --max-memory"), std::string::npos) << r.integrator_summary;
+  EXPECT_LE(s.memory_budget->peak(), 8192u);
+  EXPECT_GT(s.memory_budget->peak(), 0u);
+  EXPECT_EQ(s.memory_budget->used(), 0u);
 }
 
 }  // namespace

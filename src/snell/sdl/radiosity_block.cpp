@@ -5,6 +5,9 @@
 namespace snell::sdl {
 
 scene::RadiositySettings Parser::parse_radiosity_block() {
+  // The cache is charged to --max-memory while rendering (render/radiosity/solver.hpp): make sure the
+  // scene carries the budget even when nothing else charged it.
+  keep_memory(peek().where, 0, "radiosity cache");
   expect("{", "radiosity");
   scene::RadiositySettings r;
   for (;;) {

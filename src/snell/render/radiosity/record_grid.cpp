@@ -77,8 +77,14 @@ uint64_t RecordGrid::cell_key(int level, int64_t x, int64_t y, int64_t z) {
 void RecordGrid::insert(const Record& r) {
   const uint32_t index = static_cast<uint32_t>(records_.size());
   records_.push_back(r);
+  probes_.push_back(
+      Probe{static_cast<float>(r.point.x), static_cast<float>(r.point.y), static_cast<float>(r.point.z),
+            static_cast<float>(r.harmonic_mean * r.harmonic_mean), static_cast<float>(r.normal.x),
+            static_cast<float>(r.normal.y), static_cast<float>(r.normal.z)});
   const double reach = std::max(r.harmonic_mean * reach_factor_, 1e-12);
-  const int level = std::clamp(static_cast<int>(std::ceil(std::log2(2 * reach))), -60, 60);
+  // Cells at least as wide as the reach: a record lands in at most 3 x 3 x 3 cells, and a query weighs few
+  // records whose reach misses it.
+  const int level = std::clamp(static_cast<int>(std::ceil(std::log2(reach))), -60, 60);
   const double side = std::ldexp(1.0, level);
   if (!std::binary_search(levels_.begin(), levels_.end(), level))
     levels_.insert(std::upper_bound(levels_.begin(), levels_.end(), level), level);
@@ -102,6 +108,7 @@ void RecordGrid::insert(const Record& r) {
 
 void RecordGrid::clear() {
   records_.clear();
+  probes_.clear();
   cells_.clear();
   levels_.clear();
   index_entries_ = 0;
@@ -112,11 +119,18 @@ uint64_t RecordGrid::bytes_per_record() {
 }
 
 uint64_t RecordGrid::bytes() const {
-  return records_.capacity() * sizeof(Record) + index_entries_ * sizeof(uint32_t) +
+  return records_.capacity() * (sizeof(Record) + sizeof(Probe)) + index_entries_ * sizeof(uint32_t) +
          cells_.size() * (sizeof(uint64_t) + sizeof(std::vector<uint32_t>) + 16);
 }
 
 void RecordGrid::gather(const ReuseQuery& q, Blend& blend) const {
+  // 2 sqrt(1 - cos) < bound needs cos > 1 - bound^2 / 4; float slack keeps the prefilter conservative.
+  const float least_cos = static_cast<float>(1 - q.error_bound * q.error_bound / 4) - 1e-4f;
+  const float bound_squared = static_cast<float>(q.error_bound * q.error_bound) * 1.001f;
+  const float nx = static_cast<float>(q.normal.x), ny = static_cast<float>(q.normal.y),
+              nz = static_cast<float>(q.normal.z);
+  const float px = static_cast<float>(q.point.x), py = static_cast<float>(q.point.y),
+              pz = static_cast<float>(q.point.z);
   for (const int level : levels_) {
     const double side = std::ldexp(1.0, level);
     const auto cell = cells_.find(cell_key(level, static_cast<int64_t>(std::floor(q.point.x / side)),
@@ -124,7 +138,16 @@ void RecordGrid::gather(const ReuseQuery& q, Blend& blend) const {
                                            static_cast<int64_t>(std::floor(q.point.z / side))));
     if (cell == cells_.end()) continue;
     for (const uint32_t i : cell->second) {
+      // Cheap rejections on the compact copy first (conservative, so the exact rule decides): normals
+      // too far apart for the bound on their own, then POV-Ray's quick distance test (the shrunk radius
+      // never exceeds the harmonic mean).
+      const Probe& p = probes_[i];
+      if (p.nx * nx + p.ny * ny + p.nz * nz < least_cos) continue;
+      const float dx = p.x - px, dy = p.y - py, dz = p.z - pz;
+      if (dx * dx + dy * dy + dz * dz > p.radius_squared * bound_squared) continue;
       const Record& r = records_[i];
+      const double reach = r.harmonic_mean * q.error_bound;
+      if (length_squared(q.point - r.point) >= reach * reach) continue;
       if (const double w = reuse_weight(r, q); w > 0) blend.add(r, w);
     }
   }

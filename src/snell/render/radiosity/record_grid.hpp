@@ -58,9 +58,9 @@ struct Blend {
 };
 
 /// Records indexed by a hierarchy of hashed grids: a record of reach r (harmonic mean x the largest error
-/// bound any query will use) is filed in every cell of side >= 2r its reach touches (at most 8), so a
-/// query visits one cell per grid level in use. Iteration order is insertion order, so sums over the
-/// records are the same in every run.
+/// bound any query will use) is filed in every cell of side >= r (the next power of two) its reach touches
+/// (at most 27), so a query visits one cell per grid level in use. Iteration order is insertion order, so
+/// sums over the records are the same in every run.
 class RecordGrid {
  public:
   /// `reach_factor`: the largest error bound queries will use.
@@ -81,8 +81,13 @@ class RecordGrid {
 
  private:
   static uint64_t cell_key(int level, int64_t x, int64_t y, int64_t z);
+  /// A record's position, squared radius and normal in floats, for quick rejection of far records.
+  struct Probe {
+    float x, y, z, radius_squared, nx, ny, nz;
+  };
   double reach_factor_;
   std::vector<Record> records_;
+  std::vector<Probe> probes_;
   std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
   /// Grid levels that hold records (cell side 2^level), ascending.
   std::vector<int> levels_;

@@ -165,10 +165,19 @@ Color Solver::ambient(const Vec3& point, const Vec3& normal, double ray_weight, 
 }
 
 void Solver::merge(std::vector<TileRecords>& tiles) {
+  // Tiles of one pass cannot see each other's records, so near their borders they gather twice where a
+  // single-threaded pretrace would have reused: a record is dropped when the records before it (in tile
+  // order) already cover its point as a pretrace lookup would require. This keeps lookups fast.
   for (TileRecords& tile : tiles)
     for (size_t depth = 0; depth < tile.by_depth.size(); ++depth)
       for (const Record& r : tile.by_depth[depth].records()) {
         if (cache_full_) return;
+        const BounceSettings& b = bounces_[depth];
+        const ReuseQuery query{r.point, r.normal,
+                               settings_.error_bound * settings_.low_error_factor * b.error_factor, false};
+        Blend covered;
+        cache_[depth].gather(query, covered);
+        if (covered.weight * 4 >= b.reuse_count) continue;
         if (budget_) {
           try {
             budget_->charge(RecordGrid::bytes_per_record(), "radiosity cache");
