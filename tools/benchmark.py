@@ -3,7 +3,7 @@
 
 Usage (from the project root, after configuring with -DSNELL_BUILD_BENCH=ON and building):
   tools/benchmark.py [--bin build/snell] [--bench build/bench/snell_bench] [--runs N] [--quick]
-                     [--scenes NAME,NAME] [--out docs/benchmark.md]
+                     [--scenes NAME,NAME] [--benchmark-size WxH] [--out docs/benchmark.md]
 
 1. Ray throughput of each accelerator (Google Benchmark, build/bench/snell_bench) against the Embree back end
    on the same 10,000 spheres and rays: coherent primary rays and incoherent random rays.
@@ -121,6 +121,8 @@ def main():
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--scenes", default="", help="comma-separated conformance scene names")
     parser.add_argument("--out", default="docs/benchmark.md")
+    parser.add_argument("--benchmark-size", default="",
+                        help="WxH of benchmark.pov (default 640x480; 160x120 with --quick)")
     args = parser.parse_args()
     snell = str(Path(args.bin).resolve())
     if not os.access(snell, os.X_OK) or shutil.which("povray") is None:
@@ -140,7 +142,8 @@ def main():
 
         load = os.getloadavg()
         lines = ["# snell benchmark", "",
-                 f"Measured by `tools/benchmark.py{' --quick' if args.quick else ''}` on {time.strftime('%Y-%m-%d')}, "
+                 f"Measured by `tools/benchmark.py{' --quick' if args.quick else ''}"
+                 f"{' --benchmark-size ' + args.benchmark_size if args.benchmark_size else ''}` on {time.strftime('%Y-%m-%d')}, "
                  f"{os.cpu_count()} cores, load average at start {load[0]:.1f}; medians of {args.runs} runs. "
                  "Other work shared the machine, so compare the ratios (measured side by side), not the times.", ""]
 
@@ -167,6 +170,8 @@ def main():
 
         bench_dir = work / "examples" / "advanced" / "benchmark"
         size = (160, 120) if args.quick else (640, 480)
+        if args.benchmark_size:
+            size = tuple(int(v) for v in args.benchmark_size.lower().split("x"))
         bench = render_pair("benchmark.pov", bench_dir, "benchmark.pov", size, 1 if args.quick else args.runs,
                             snell, work)
         print(bench, flush=True)
