@@ -56,10 +56,20 @@ double dipole_reflectance(const Channel& c, double a, double r2) {
   return c.albedo / (4 * std::numbers::pi) * (real + virt);
 }
 
-Vec3 uniform_sphere(math::Pcg32& rng) {
-  const double z = 1 - 2 * rng.next_double();
+/// Direction `index` of `count` spread uniformly over the sphere: jittered strata of an m x m grid in
+/// (z, phi) (m = floor(sqrt(count)); the rest plain random). Stratifying keeps the estimate unbiased and
+/// lowers its noise against independent directions, so the same `samples` count gives a smoother image.
+Vec3 stratified_sphere(int index, int count, math::Pcg32& rng) {
+  const int m = static_cast<int>(std::sqrt(static_cast<double>(count)));
+  double u1 = rng.next_double();
+  double u2 = rng.next_double();
+  if (index < m * m) {
+    u1 = (index / m + u1) / m;
+    u2 = (index % m + u2) / m;
+  }
+  const double z = 1 - 2 * u1;
   const double s = std::sqrt(std::max(0.0, 1 - z * z));
-  const double phi = 2 * std::numbers::pi * rng.next_double();
+  const double phi = 2 * std::numbers::pi * u2;
   return {s * std::cos(phi), s * std::sin(phi), z};
 }
 
@@ -108,7 +118,7 @@ class Estimator {
     Color sum;
     int found = 0;
     for (int i = 0; i < q_.diffuse_samples; ++i) {
-      const Vec3 v = uniform_sphere(rng_);
+      const Vec3 v = stratified_sphere(i, q_.diffuse_samples, rng_);
       scene::SurfaceHit hit;
       if (!accel_.intersect(math::Ray{base, v, 0.0}, 0.0, std::numeric_limits<double>::infinity(),
                             scene::RayKind::shadow, hit))
@@ -151,7 +161,9 @@ class Estimator {
     for (int i = 0; i < q_.single_samples; ++i)
       for (int c = 0; c < 3; ++c) {
         const Channel& ch = channels_[c];
-        const double s_out = -std::log1p(-rng_.next_double()) / ch.sigma_t;
+        // Stratified exponential distances (one stratum per sample), unbiased like independent ones.
+        const double u = (i + rng_.next_double()) / q_.single_samples;
+        const double s_out = -std::log1p(-u) / ch.sigma_t;
         if (s_out >= depth_mm) continue;
         const Vec3 bend = q_.point + (s_out / q_.mm_per_unit) * refracted;
         channel_of(sum, c) += single_at(bend, s_out, c, cos_out_prime, ft_out);
