@@ -139,6 +139,9 @@ TEST_F(MpiTest, AfterAKilledRankContinueRendersOnlyTheMissingTiles) {
   killer.join();
   if (killed.code == 0) GTEST_SKIP() << "the render finished before a rank was killed";
   ASSERT_NE(killed.code, 124) << "the job hung after a rank died";
+  // On a loaded machine the kill can land after rank 0 wrote the image and removed the resume file.
+  if (!fs::exists(resume_file) && fs::exists(dir_ / "out.exr"))
+    GTEST_SKIP() << "the image was complete before a rank was killed";
   ASSERT_TRUE(fs::exists(resume_file)) << killed.output;
 
   const auto resumed = test::run_command("timeout -k 10 120 " + render + " +C");
