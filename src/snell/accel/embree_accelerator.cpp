@@ -21,8 +21,6 @@ using math::Bounds3;
 using math::Ray;
 using math::Vec3;
 
-constexpr double kMaxEmbreeCoordinate = 1e18;
-
 // Float boxes always contain the double ones: corners rounded outward (ray_box.hpp).
 constexpr auto round_down = float_below;
 constexpr auto round_up = float_above;
@@ -146,16 +144,10 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
 
   for (const auto& o : scene.objects) {
     const Bounds3 b = culling_bounds(*o);
-    // Planes, and objects a transform makes unbounded or whose bounds are NaN/empty, are tested directly.
-    // So are boxes beyond Embree's valid float range (|x| < 1.844e18, FLT_LARGE in Embree's sources): its
-    // builder silently drops primitives with bounds outside it.
-    const bool in_range = max_component(math::abs(b.lo)) < kMaxEmbreeCoordinate &&
-                          max_component(math::abs(b.hi)) < kMaxEmbreeCoordinate;
-    if (native_mesh_of(*o, kMaxEmbreeCoordinate)) {
-      s.native.push_back(o.get());
-      s.scene_bounds.unite(b);
-    } else if (b.is_finite() && !b.empty() && in_range) {
-      s.bounded.push_back(o.get());
+    // Planes, and objects a transform makes unbounded, whose bounds are NaN/empty or beyond Embree's
+    // float range, are tested directly.
+    if (embree_can_hold(b)) {
+      (native_mesh_of(*o) ? s.native : s.bounded).push_back(o.get());
       s.scene_bounds.unite(b);
     } else {
       s.unbounded.push_back(o.get());

@@ -6,17 +6,16 @@ namespace snell::accel {
 
 using math::Vec3;
 
-const geometry::Mesh* native_mesh_of(const scene::Object& object, double max_coordinate) {
+bool embree_can_hold(const math::Bounds3& box) {
+  return box.is_finite() && !box.empty() && max_component(math::abs(box.lo)) < kMaxEmbreeCoordinate &&
+         max_component(math::abs(box.hi)) < kMaxEmbreeCoordinate;
+}
+
+const geometry::Mesh* native_mesh_of(const scene::Object& object) {
   if (object.csg || object.motion || object.bounded_by || object.flags.inverse) return nullptr;
   const auto* mesh = dynamic_cast<const geometry::Mesh*>(object.shape.get());
   if (!mesh || mesh->data().faces.size() < kNativeMeshMinFaces) return nullptr;
-  const math::Bounds3 local = mesh->bounds();
-  const math::Bounds3 world = object.transform.bounds(local);
-  const auto in_range = [&](const math::Bounds3& b) {
-    return b.is_finite() && !b.empty() && max_component(math::abs(b.lo)) < max_coordinate &&
-           max_component(math::abs(b.hi)) < max_coordinate;
-  };
-  return in_range(local) && in_range(world) ? mesh : nullptr;
+  return embree_can_hold(mesh->bounds()) ? mesh : nullptr;
 }
 
 MeshSceneCache::~MeshSceneCache() {

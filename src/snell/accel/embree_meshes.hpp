@@ -18,8 +18,16 @@ namespace snell::accel {
 /// speed of big meshes and of many copies, and small ones keep the exact path.
 inline constexpr size_t kNativeMeshMinFaces = 64;
 
-/// The mesh of a still, non-CSG object without `bounded_by` whose vertices Embree can hold in float, or null.
-const geometry::Mesh* native_mesh_of(const scene::Object& object, double max_coordinate);
+/// Largest coordinate of a box handed to Embree: its builder silently drops primitives whose bounds leave
+/// its valid float range (|x| < 1.844e18, FLT_LARGE in Embree's sources).
+inline constexpr double kMaxEmbreeCoordinate = 1e18;
+
+/// Whether Embree can walk a box: finite, not empty and inside kMaxEmbreeCoordinate.
+bool embree_can_hold(const math::Bounds3& box);
+
+/// The mesh of a still, non-CSG object without `bounded_by` whose own vertices Embree can hold in float,
+/// or null. The caller checks the object's world box with embree_can_hold.
+const geometry::Mesh* native_mesh_of(const scene::Object& object);
 
 /// Embree scenes of float triangles, one per distinct mesh, released with the cache.
 class MeshSceneCache {

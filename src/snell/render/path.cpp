@@ -41,6 +41,11 @@ double phong_lobe(const Vec3& mirror, const Vec3& wi, double exponent) {
   return c > 0 ? (exponent + 2) / 2 * std::pow(c, exponent) : 0;
 }
 
+/// How much of a surface shows itself rather than what lies behind it (POV-Ray 3.7's opacity).
+double opacity_of(const material::Rgbft& pc) {
+  return std::clamp(1.0 - pc.filter * pc.rgb.max() - pc.transmit, 0.0, 1.0);
+}
+
 double grey_max(const Color& c) {
   return std::max(0.0, c.max());
 }
@@ -57,13 +62,7 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const accel::Accelerat
     : scene_(scene), accel_(accelerator), emitters_(find_sphere_emitters(scene)) {}
 
 Color PathIntegrator::emitted(const material::Finish& f, const material::Rgbft& pc) const {
-  // An object without any reflection lobe glows with its ambient colour (POV-Ray's way of making visible
-  // light shapes).
-  const bool reflects_light = f.diffuse > 0 || f.specular > 0 || f.phong > 0;
-  Color e = f.emission;
-  if (!reflects_light && f.ambient_set) e += f.ambient * scene_.settings.ambient_light;
-  const double opacity = std::clamp(1.0 - pc.filter * pc.rgb.max() - pc.transmit, 0.0, 1.0);
-  return pc.rgb * e * opacity;
+  return pc.rgb * finish_emission(f, scene_.settings.ambient_light) * opacity_of(pc);
 }
 
 double PathIntegrator::emitter_pdf(const scene::Object* object, const Vec3& from) const {
@@ -161,15 +160,17 @@ Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext
     const bool entering = dot(hit.normal, ray.direction) < 0;
     const Vec3 n = entering ? hit.normal : -hit.normal;
     const Vec3 wo = -ray.direction;
-    const double opacity = std::clamp(1.0 - pc.filter * pc.rgb.max() - pc.transmit, 0.0, 1.0);
+    const double opacity = opacity_of(pc);
 
     // Emission, weighted against the previous vertex's emitter sampling when it could have found it.
-    double weight = 1;
-    if (previous.lobe_pdf > 0) {
-      const double pdf_light = emitter_pdf(hit.object, previous.point);
-      if (pdf_light > 0) weight = power_heuristic(previous.lobe_pdf, pdf_light);
+    if (const Color light = emitted(f, pc); !light.is_black()) {
+      double weight = 1;
+      if (previous.lobe_pdf > 0) {
+        const double pdf_light = emitter_pdf(hit.object, previous.point);
+        if (pdf_light > 0) weight = power_heuristic(previous.lobe_pdf, pdf_light);
+      }
+      radiance += throughput * light * weight;
     }
-    radiance += throughput * emitted(f, pc) * weight;
 
     // The finish's lobes and their weights.
     const Color albedo = pc.rgb * (f.diffuse * opacity);

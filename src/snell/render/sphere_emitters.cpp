@@ -19,12 +19,14 @@ double one_minus_cos_max(double radius, double distance) {
   return x / (1 + std::sqrt(std::max(0.0, 1 - x)));
 }
 
-bool emits(const material::Finish& f) {
-  const bool reflects_light = f.diffuse > 0 || f.specular > 0 || f.phong > 0;
-  return !f.emission.is_black() || (!reflects_light && f.ambient_set && !f.ambient.is_black());
-}
-
 }  // namespace
+
+math::Color finish_emission(const material::Finish& f, const math::Color& ambient_light) {
+  const bool reflects_light = f.diffuse > 0 || f.specular > 0 || f.phong > 0;
+  math::Color e = f.emission;
+  if (!reflects_light && f.ambient_set) e += f.ambient * ambient_light;
+  return e;
+}
 
 std::vector<SphereEmitter> find_sphere_emitters(const scene::Scene& scene) {
   std::vector<SphereEmitter> emitters;
@@ -40,7 +42,9 @@ std::vector<SphereEmitter> find_sphere_emitters(const scene::Scene& scene) {
     const bool similar = std::abs(length(ay) - r) <= tolerance && std::abs(length(az) - r) <= tolerance &&
                          std::abs(dot(ax, ay)) <= tolerance * r && std::abs(dot(ax, az)) <= tolerance * r &&
                          std::abs(dot(ay, az)) <= tolerance * r;
-    if (!similar || !(r > 0) || !emits(object->texture->finish_at(center))) continue;
+    if (!similar || !(r > 0) ||
+        finish_emission(object->texture->finish_at(center), scene.settings.ambient_light).is_black())
+      continue;
     emitters.push_back({object.get(), center, r});
   }
   return emitters;

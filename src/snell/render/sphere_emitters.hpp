@@ -7,6 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include "snell/material/finish.hpp"
+#include "snell/math/color.hpp"
 #include "snell/math/vec3.hpp"
 #include "snell/scene/scene.hpp"
 
@@ -18,7 +20,12 @@ struct SphereEmitter {
   double radius = 0;
 };
 
-/// Spheres whose finish emits at their centre (emission, or ambient without any reflection lobe) and
+/// What a finish emits for the path integrator, before pigment and opacity: its `emission`, plus
+/// ambient x ambient_light when it has no diffuse, specular or phong lobe (POV-Ray's way of making
+/// visible light shapes).
+math::Color finish_emission(const material::Finish& f, const math::Color& ambient_light);
+
+/// Spheres whose finish emits at their centre (finish_emission is not black) and
 /// whose transform keeps them spheres (rotation, uniform scale, translation); still objects only.
 std::vector<SphereEmitter> find_sphere_emitters(const scene::Scene& scene);
 

@@ -86,6 +86,16 @@ WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Acc
   caustics_ = photons::make_caustics(scene, accelerator);
 }
 
+// One --stats line for each cache the integrator built: radiosity records, then the photon map.
+std::string WhittedIntegrator::summary() const {
+  std::string lines = radiosity_ ? radiosity_->summary() : std::string{};
+  if (caustics_) {
+    if (!lines.empty()) lines.push_back('\n');
+    lines.append(caustics_->summary());
+  }
+  return lines;
+}
+
 Color WhittedIntegrator::trace_camera_ray(const Ray& ray, TraceContext& context, double max_distance) const {
   ++context.counters.camera;
   context.time = ray.time;

@@ -1,5 +1,5 @@
 // The Whitted integrator's side of radiosity (render/radiosity/solver.hpp): the pretrace before the
-// image, a fresh set of tile records before each tile, and the cache's statistics.
+// image and a fresh set of tile records before each tile (its --stats line: WhittedIntegrator::summary).
 #include "snell/render/whitted.hpp"
 
 namespace snell::render {
@@ -15,15 +15,6 @@ void WhittedIntegrator::prepare(const scene::Camera& camera, int width, int heig
 
 void WhittedIntegrator::begin_tile(TraceContext& context) const {
   if (radiosity_) radiosity_->begin_tile(context);
-}
-
-std::string WhittedIntegrator::summary() const {
-  std::string lines = radiosity_ ? radiosity_->summary() : std::string{};
-  if (caustics_) {
-    if (!lines.empty()) lines.push_back('\n');
-    lines.append(caustics_->summary());
-  }
-  return lines;
 }
 
 }  // namespace snell::render
