@@ -8,7 +8,7 @@ find_package(Threads REQUIRED)
 find_package(PNG REQUIRED)        # PNG output without loading OpenImageIO (src/snell/io/png_writer.hpp)
 find_package(Freetype REQUIRED)  # text { ttf ... } glyph outlines
 find_package(SDL2 QUIET)           # optional: the +D render window (src/cli/preview/); without it +D warns
-find_package(assimp REQUIRED)     # mesh { "file.obj" } model import (src/snell/io/mesh_import.cpp)
+find_package(assimp REQUIRED)     # mesh { "file.obj" } model import (src/plugins/assimp_plugin.cpp)
 find_package(ZLIB REQUIRED)        # tests: builds a palette PNG byte by byte (tests/sdl)
 
 # Debian's OpenImageIO target names /usr/include/opencv4, which does not exist without OpenCV's headers;

@@ -122,6 +122,8 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
       ->each([&o](const std::string&) { o.size_given = true; });
   render->add_option("--aa", o.aa_threshold, "anti-alias with this threshold (POV-Ray +A)")
       ->each([&o](const std::string&) { o.antialias = true; });
+  render->add_option("--aa-gamma", o.aa_gamma,
+                     "gamma the anti-aliasing test compares colours in (POV-Ray +AG, default 2.5)");
   render->add_option("--aa-depth", o.aa_depth,
                      "supersampling depth: depth^2 extra rays (POV-Ray +R, default 3)");
   render->add_flag("--jitter", o.jitter, "jitter supersamples (POV-Ray +J)");
@@ -230,6 +232,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   ro.height = o.height;
   ro.antialias = o.antialias;
   ro.aa_threshold = o.aa_threshold;
+  ro.aa_compare_exponent = render::aa_compare_exponent_for(scene.working_gamma(), o.aa_gamma);
   ro.aa_depth = o.aa_depth;
   ro.jitter = o.jitter;
   ro.jitter_amount = o.jitter_amount;

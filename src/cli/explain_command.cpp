@@ -108,7 +108,7 @@ int run_explain(const std::vector<std::string>& args) {
   }
   // Everything about the command line is checked before the scene is read, and outputs before anything is
   // written, so a bad request costs nothing and leaves no file behind.
-  const render::RenderOptions ro = render_options(o);
+  render::RenderOptions ro = render_options(o);
   const bool layers = check_layer_request(o, o.scene);
   if (o.pixel.empty() && !layers)
     throw UsageError("explain needs --pixel X,Y, or layers (--aov, --heatmap, --split-bounces, --stats)");
@@ -129,6 +129,7 @@ int run_explain(const std::vector<std::string>& args) {
   if (!o.svg.empty()) check_writable(o.svg, "--svg");
 
   const scene::Scene scene = load_scene(o);
+  ro.aa_compare_exponent = render::aa_compare_exponent_for(scene.working_gamma(), 2.5);
   const auto accelerator = build_accelerator(o.accel, scene);
   if (!o.pixel.empty()) {
     const render::explain::PixelExplanation e =

@@ -114,6 +114,8 @@ bool apply_ini_option(CliOptions& o, const std::string& key_as_written, const st
     o.antialias = truth(key_as_written, value);
   } else if (key == "antialias_threshold") {
     o.aa_threshold = number(key_as_written, value);
+  } else if (key == "antialias_gamma") {
+    o.aa_gamma = number(key_as_written, value);
   } else if (key == "antialias_depth") {
     o.aa_depth = static_cast<int>(number(key_as_written, value));
   } else if (key == "sampling_method") {

@@ -23,6 +23,7 @@ struct CliOptions {
   int height = 600;
   bool antialias = false;
   double aa_threshold = 0.3;
+  double aa_gamma = 2.5;          // POV-Ray +AG / Antialias_Gamma
   int aa_depth = 3;
   bool jitter = false;
   double jitter_amount = 1.0;

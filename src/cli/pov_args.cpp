@@ -38,8 +38,8 @@ bool starts_with(const std::string& s, const std::string& prefix) {
 }
 
 /// POV-Ray switches that snell knows but does not implement: accepted with a warning.
-constexpr const char* kUnsupported[] = {"Q",  "AG", "UA", "GA", "GD", "GF", "GR", "GS",  "GW", "K",
-                                        "UV", "UR", "UF", "UD", "UO", "MB", "MV", "RVP", "HT", "HN", "HI"};
+constexpr const char* kUnsupported[] = {"Q",  "AG", "UA", "GA", "GD", "GF", "GR",  "GS", "GW", "K", "UV",
+                                        "UR", "UF", "UD", "UO", "MB", "MV", "RVP", "HT", "HN", "HI"};
 /// Known switches without an effect on a batch render: accepted silently.
 constexpr const char* kIgnored[] = {"V", "X", "GP"};
 
@@ -165,6 +165,8 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
                               (std::isdigit(static_cast<unsigned char>(key[1])) || key[1] == '.'))) {
       o.antialias = on;
       if (key.size() > 1) o.aa_threshold = parse_double(arg, rest_after(1));
+    } else if (starts_with(key, "AG") && key.size() > 2) {
+      o.aa_gamma = parse_double(arg, rest_after(2));
     } else if (starts_with(key, "AM")) {
       const int method = key.size() > 2 ? parse_int(arg, rest_after(2)) : 1;
       if (method == 1 || method == 2)

@@ -3,9 +3,9 @@
 
 #include "cli/options.hpp"
 #include "snell/io/image_file.hpp"
+#include "snell/memory/budget.hpp"
 #include "snell/render/filter.hpp"
 #include "snell/render/sampler.hpp"
-#include "snell/memory/budget.hpp"
 
 namespace snell::cli {
 

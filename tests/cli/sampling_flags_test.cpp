@@ -1,4 +1,4 @@
-// The sampling flags on the command line: --spp, --sampler, --filter (both forms) and +AM2.
+// The sampling flags on the command line: --spp, --sampler, --filter (both forms), +AM2 and +AG.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -61,6 +61,34 @@ TEST(SamplingFlags, AdaptiveMethodTwoIsAcceptedAndOthersWarn) {
   EXPECT_EQ(two.output.find("method 2 is not supported"), std::string::npos) << two.output;
   const Outcome three = run("+I" + scene_file() + " +W8 +H6 -D +A0.1 +AM3 +O" + out);
   EXPECT_NE(three.output.find("anti-aliasing method 3 is not supported"), std::string::npos) << three.output;
+  std::filesystem::remove(out);
+}
+
+/// The "N pixels supersampled" figure of --stats.
+long supersampled(const std::string& output) {
+  const size_t end = output.find(" pixels supersampled");
+  if (end == std::string::npos) return -1;
+  const size_t start = output.rfind(' ', end - 1);
+  return std::stol(output.substr(start + 1, end - start - 1));
+}
+
+TEST(SamplingFlags, AntialiasGammaChangesTheSupersampledPixels) {
+  // A dim sphere (a 3.7 scene: linear working colours) on black: its edge is a small linear difference
+  // that POV-Ray's default Antialias_Gamma 2.5 makes large enough to supersample; +AG0 compares linearly.
+  const auto scene = temp("_ag.pov");
+  std::ofstream(scene) << "#version 3.7;\nglobal_settings { assumed_gamma 1 }\ncamera { location -3*z }\n"
+                          "sphere { 0, 1 pigment { rgb 0.04 } finish { ambient 1 diffuse 0 } }\n";
+  const std::string out = temp("_ag.png").string();
+  const std::string common = "+I" + scene.string() + " +W40 +H30 -D +A0.3 --stats +O" + out;
+  const Outcome pov = run(common);
+  const Outcome linear = run(common + " +AG0");
+  const Outcome ini = run(common + " Antialias_Gamma=0");
+  ASSERT_EQ(pov.code, 0) << pov.output;
+  ASSERT_EQ(linear.code, 0) << linear.output;
+  EXPECT_GT(supersampled(pov.output), 0) << pov.output;
+  EXPECT_EQ(supersampled(linear.output), 0) << linear.output;  // 3 x 0.04 < 0.3
+  EXPECT_EQ(supersampled(ini.output), 0) << ini.output;
+  std::filesystem::remove(scene);
   std::filesystem::remove(out);
 }
 

@@ -10,7 +10,8 @@ namespace {
 using math::Color;
 using math::Vec3;
 
-RenderResult render_with(int threads, bool aa, bool jitter, bool area_light = false) {
+RenderResult render_with(int threads, bool aa, bool jitter, bool area_light = false,
+                         double aa_compare_exponent = 0.4) {
   scene::Scene s = test::two_spheres();
   if (area_light) {
     // A jittered, adaptive area light: its random grid offsets must not depend on which thread traces.
@@ -29,6 +30,7 @@ RenderResult render_with(int threads, bool aa, bool jitter, bool area_light = fa
   o.antialias = aa;
   o.jitter = jitter;
   o.seed = 7;
+  o.aa_compare_exponent = aa_compare_exponent;
   return Renderer(s, *accel, o).render();
 }
 
@@ -83,6 +85,39 @@ TEST(RendererTest, RejectsBadSizes) {
   o.width = 10;
   o.aa_depth = 0;
   EXPECT_THROW(Renderer(s, *accel, o), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace snell::render
+
+namespace snell::render {
+namespace {
+
+// POV-Ray compares anti-aliasing neighbours after decoding the working gamma and encoding with
+// Antialias_Gamma 2.5 (view.cpp): for a linear scene each channel becomes c^(1/2.5).
+TEST(RendererTest, AntiAliasingGammaExponentIsWorkingGammaOverAntialiasGamma) {
+  EXPECT_DOUBLE_EQ(aa_compare_exponent_for(1.0, 2.5), 0.4);
+  EXPECT_DOUBLE_EQ(aa_compare_exponent_for(2.2, 2.5), 0.88);
+  EXPECT_DOUBLE_EQ(aa_compare_exponent_for(1.8, 0.0), 1.8);  // no Antialias_Gamma: decoding only
+}
+
+TEST(RendererTest, AntiAliasingGammaWeighsDarkDifferencesMore) {
+  const double t = 0.3;  // +A0.3
+  // Greys 0.02 and 0.08: 0.18 apart linearly, 3 * (0.08^0.4 - 0.02^0.4) = 0.465 after the gamma.
+  EXPECT_LT(color_distance(Color(0.02), Color(0.08)), t);
+  EXPECT_NEAR(color_distance(aa_encoded(Color(0.02), 0.4), aa_encoded(Color(0.08), 0.4)), 0.4649, 1e-4);
+  // Greys 0.5 and 0.62: 0.36 apart linearly, 3 * (0.62^0.4 - 0.5^0.4) = 0.2043 after it.
+  EXPECT_GT(color_distance(Color(0.5), Color(0.62)), t);
+  EXPECT_NEAR(color_distance(aa_encoded(Color(0.5), 0.4), aa_encoded(Color(0.62), 0.4)), 0.2043, 1e-4);
+  EXPECT_EQ(aa_encoded(Color(-0.5, 0.25, 1.0), 0.5), Color(0.0, 0.5, 1.0));
+}
+
+TEST(RendererTest, AntiAliasingGammaChangesWhichPixelsAreSupersampled) {
+  const RenderResult linear = render_with(2, true, false, false, 1.0);
+  const RenderResult pov = render_with(2, true, false, false, 0.4);
+  EXPECT_GT(linear.supersampled_pixels, 0u);
+  EXPECT_GT(pov.supersampled_pixels, 0u);
+  EXPECT_NE(linear.supersampled_pixels, pov.supersampled_pixels);
 }
 
 }  // namespace

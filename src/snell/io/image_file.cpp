@@ -8,6 +8,7 @@
 #include <system_error>
 #include <vector>
 
+#include "snell/io/byte_encoding.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_format.hpp"
 #include "snell/io/png_reader.hpp"
@@ -85,7 +86,10 @@ void write_image(const fs::path& path, const Image& image, const WriteOptions& o
       type = kSnellUint16;
       data = bytes16.data();
     } else {
-      bytes8 = quantise<uint8_t>(image, options.encoding, 255.0);
+      const ByteEncoding byte(options.encoding);
+      bytes8 = interleave<uint8_t>(image, [&](float v, bool is_alpha) {
+        return is_alpha ? static_cast<uint8_t>(std::lround(static_cast<double>(v) * 255.0)) : byte(v);
+      });
       type = kSnellUint8;
       data = bytes8.data();
     }

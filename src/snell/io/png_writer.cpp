@@ -31,6 +31,10 @@ bool encode(PngJob& job) {
   png_set_IHDR(png, info, static_cast<png_uint_32>(job.width), static_cast<png_uint_32>(job.height), job.bits,
                job.channels == 4 ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  // Level 1 with the Sub and Paeth filters writes a 320x240 render in a third of the default time (level
+  // 6, all filters) for files about 10% larger: the write is a fixed cost of every render.
+  png_set_compression_level(png, 1);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_PAETH);
   if (job.srgb) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   png_write_info(png, info);
   if (job.bits == 16) png_set_swap(png);  // PNG stores 16-bit samples big-endian

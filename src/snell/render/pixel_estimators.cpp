@@ -58,7 +58,7 @@ Color CameraSampling::filtered_pixel(int x, int y, int count, TraceContext& cont
 namespace {
 
 struct Subdivision {
-  double threshold, jitter;
+  double threshold, exponent, jitter;
   uint64_t seed;
   const std::function<Color(double, double)>& trace;
 
@@ -75,10 +75,11 @@ struct Subdivision {
 
   Color square(double x0, double y0, double size, const Color& c00, const Color& c10, const Color& c01,
                const Color& c11, int levels) const {
-    const Color* c[4] = {&c00, &c10, &c01, &c11};
+    const Color c[4] = {aa_encoded(c00, exponent), aa_encoded(c10, exponent), aa_encoded(c01, exponent),
+                        aa_encoded(c11, exponent)};
     bool split = false;
     for (int i = 0; i < 4 && !split; ++i)
-      for (int j = i + 1; j < 4 && !split; ++j) split = color_distance(*c[i], *c[j]) >= threshold;
+      for (int j = i + 1; j < 4 && !split; ++j) split = color_distance(c[i], c[j]) >= threshold;
     if (levels <= 0 || !split) return (c00 + c10 + c01 + c11) / 4.0;
     const double h = size / 2;
     const Color top = sample(x0 + h, y0, h), left = sample(x0, y0 + h, h);
@@ -94,9 +95,9 @@ struct Subdivision {
 
 }  // namespace
 
-Color adaptive_pixel(int x, int y, const Color corners[4], int levels, double threshold, double jitter,
-                     uint64_t seed, const std::function<Color(double, double)>& trace) {
-  const Subdivision s{threshold, jitter, seed, trace};
+Color adaptive_pixel(int x, int y, const Color corners[4], int levels, double threshold, double exponent,
+                     double jitter, uint64_t seed, const std::function<Color(double, double)>& trace) {
+  const Subdivision s{threshold, exponent, jitter, seed, trace};
   return s.square(x, y, 1, corners[0], corners[1], corners[2], corners[3], levels);
 }
 

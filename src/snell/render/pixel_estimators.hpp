@@ -39,11 +39,12 @@ struct CameraSampling {
 
 /// POV-Ray's adaptive anti-aliasing (+AM2; tracetask.cpp, AdaptiveSupersamplingM2): the pixel square whose
 /// corners have colours `corners` (top-left, top-right, bottom-left, bottom-right) is split into four while
-/// two corners differ by at least `threshold` and `levels` remain; each leaf contributes the mean of its
+/// two corners differ by at least `threshold` (compared through aa_encoded with `exponent`) and `levels`
+/// remain; each leaf contributes the mean of its
 /// corners. `trace(px, py)` traces the image point in pixel units (pixel (x, y) spans [x, x+1]).
 /// New sample points move by up to `jitter` / 2 of their square's half size, seeded by their position.
 math::Color adaptive_pixel(int x, int y, const math::Color corners[4], int levels, double threshold,
-                           double jitter, uint64_t seed,
+                           double exponent, double jitter, uint64_t seed,
                            const std::function<math::Color(double, double)>& trace);
 
 }  // namespace snell::render

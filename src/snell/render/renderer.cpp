@@ -60,6 +60,16 @@ double color_distance(const Color& a, const Color& b) {
   return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
 }
 
+Color aa_encoded(const Color& c, double exponent) {
+  if (exponent == 1.0) return c;
+  auto channel = [&](double v) { return v > 0 ? std::pow(v, exponent) : 0.0; };
+  return {channel(c.r), channel(c.g), channel(c.b)};
+}
+
+double aa_compare_exponent_for(double working_gamma, double aa_gamma) {
+  return aa_gamma > 0 ? working_gamma / aa_gamma : working_gamma;
+}
+
 Renderer::Renderer(const scene::Scene& scene, const accel::Accelerator& accelerator, RenderOptions options)
     : scene_(scene), accel_(accelerator), options_(std::move(options)) {
   if (options_.width <= 0 || options_.height <= 0) throw std::invalid_argument("image size must be positive");
@@ -233,21 +243,24 @@ RenderStats Renderer::render_into(io::Image& image) const {
         const Color c[4] = {at(x, y), at(x + 1, y), at(x, y + 1), at(x + 1, y + 1)};
         image.set(x, y,
                   adaptive_pixel(x, y, c, options_.aa_depth - 1, options_.aa_threshold,
-                                 options_.jitter ? options_.jitter_amount : 0.0, options_.seed, trace));
+                                 options_.aa_compare_exponent, options_.jitter ? options_.jitter_amount : 0.0,
+                                 options_.seed, trace));
       }
   };
 
   // Pass 2 (POV-Ray "Anti-Aliasing Options", method 1): a pixel that differs from a neighbour by more than
   // the threshold gets depth x depth more samples on a sub-pixel grid, averaged with its first sample.
   // `first(x, y)` is the first-pass colour of any pixel of the tile or its one-pixel border.
-  auto supersample = [&](int x, int y, const auto& first, TraceContext& ctx) {
+  // `encoded(x, y)` is that colour through aa_encoded; POV-Ray supersamples at a distance >= the threshold.
+  auto supersample = [&](int x, int y, const auto& first, const auto& encoded, TraceContext& ctx) {
     const Color c = first(x, y);
+    const Color e = encoded(x, y);
     bool differs = false;
     const int nx[4] = {x - 1, x + 1, x, x};
     const int ny[4] = {y, y, y - 1, y + 1};
     for (int k = 0; k < 4 && !differs; ++k)
       if (nx[k] >= 0 && nx[k] < w && ny[k] >= 0 && ny[k] < h)
-        differs = color_distance(c, first(nx[k], ny[k])) > options_.aa_threshold;
+        differs = color_distance(e, encoded(nx[k], ny[k])) >= options_.aa_threshold;
     if (!differs) return c;
     ++supersampled;
     const int n = options_.aa_depth;
@@ -280,13 +293,19 @@ RenderStats Renderer::render_into(io::Image& image) const {
       const PixelRect b{std::max(t.x0 - 1, 0), std::max(t.y0 - 1, 0), std::min(t.x1 + 1, w),
                         std::min(t.y1 + 1, h)};
       const int bw = b.x1 - b.x0;
-      std::vector<Color> first(static_cast<size_t>(b.area()));
+      std::vector<Color> first(static_cast<size_t>(b.area())), encoded(first.size());
       for (int y = b.y0; y < b.y1; ++y)
-        for (int x = b.x0; x < b.x1; ++x)
-          first[static_cast<size_t>(y - b.y0) * bw + (x - b.x0)] = first_sample(x, y, ctx);
+        for (int x = b.x0; x < b.x1; ++x) {
+          const size_t i = static_cast<size_t>(y - b.y0) * bw + (x - b.x0);
+          first[i] = first_sample(x, y, ctx);
+          encoded[i] = aa_encoded(first[i], options_.aa_compare_exponent);
+        }
       auto first_at = [&](int x, int y) { return first[static_cast<size_t>(y - b.y0) * bw + (x - b.x0)]; };
+      auto encoded_at = [&](int x, int y) {
+        return encoded[static_cast<size_t>(y - b.y0) * bw + (x - b.x0)];
+      };
       for (int y = t.y0; y < t.y1; ++y)
-        for (int x = t.x0; x < t.x1; ++x) image.set(x, y, supersample(x, y, first_at, ctx));
+        for (int x = t.x0; x < t.x1; ++x) image.set(x, y, supersample(x, y, first_at, encoded_at, ctx));
     }
     for (int y = t.y0; y < t.y1; ++y)
       for (int x = t.x0; x < t.x1; ++x) image.set_alpha(x, y, 1.0f);

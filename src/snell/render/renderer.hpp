@@ -24,6 +24,10 @@ struct RenderOptions {
   /// (sum of absolute RGB differences); +R `aa_depth` gives aa_depth^2 extra samples; +J jitters them.
   bool antialias = false;
   double aa_threshold = 0.3;
+  /// Colours are compared after POV-Ray's anti-aliasing gamma (view.cpp, aaGammaCurve): each channel of
+  /// the working colour goes through c^aa_compare_exponent, the exponent being the scene's working gamma
+  /// divided by Antialias_Gamma (+AG, default 2.5). Dark differences weigh more, as the eye sees them.
+  double aa_compare_exponent = 1.0 / 2.5;
   int aa_depth = 3;
   bool jitter = false;
   double jitter_amount = 1.0;
@@ -99,5 +103,14 @@ void seed_camera_sample(math::Pcg32& rng, double sx, double sy, const RenderOpti
 
 /// POV-Ray's anti-aliasing colour distance: the sum of the absolute channel differences.
 double color_distance(const math::Color& a, const math::Color& b);
+
+/// A colour as the anti-aliasing test compares it: each channel (clamped at 0) to the power `exponent`
+/// (RenderOptions::aa_compare_exponent).
+math::Color aa_encoded(const math::Color& c, double exponent);
+
+/// The exponent of RenderOptions::aa_compare_exponent for a scene: POV-Ray decodes the working colour
+/// (gamma `working_gamma`, 1 where the scene has no gamma handling) and encodes it with `aa_gamma`; an
+/// `aa_gamma` of 0 or less leaves out the encoding.
+double aa_compare_exponent_for(double working_gamma, double aa_gamma);
 
 }  // namespace snell::render

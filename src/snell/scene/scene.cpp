@@ -9,6 +9,11 @@ double Scene::effective_assumed_gamma() const {
   return settings.language_version >= 3.7 ? 1.0 : 2.2;
 }
 
+double Scene::working_gamma() const {
+  const bool gamma_handling = settings.assumed_gamma > 0 || settings.language_version >= 3.7;
+  return gamma_handling ? effective_assumed_gamma() : 1.0;
+}
+
 math::Color Scene::miss_color(const math::Vec3& direction) const {
   if (!sky_sphere) return background.rgb;
   material::PatternPoint point;

@@ -3,8 +3,8 @@
 // immutable while rendering, read by every thread without locks.
 #include <functional>
 #include <memory>
-#include <string>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "snell/material/media.hpp"
@@ -71,6 +71,9 @@ struct Scene {
   /// The gamma the output is encoded relative to: POV-Ray 3.7 reads colours as linear under
   /// `assumed_gamma 1`, and without any assumed_gamma below #version 3.7 does no gamma handling.
   double effective_assumed_gamma() const;
+  /// The gamma POV-Ray decodes working colours with where it needs linear ones (the anti-aliasing test):
+  /// effective_assumed_gamma(), or 1 for a pre-3.7 scene without assumed_gamma (gamma handling off).
+  double working_gamma() const;
   /// What a ray that hits nothing sees: the sky sphere over the background.
   math::Color miss_color(const math::Vec3& direction) const;
 };

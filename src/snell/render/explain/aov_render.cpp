@@ -135,11 +135,14 @@ AovRender render_aovs(const scene::Scene& scene, const accel::Accelerator& accel
     std::vector<char> refine(pixels.size(), 0);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
-        const math::Color c = pixels[static_cast<size_t>(y) * w + x].colour;
+        auto encoded = [&](int px, int py) {
+          return aa_encoded(pixels[static_cast<size_t>(py) * w + px].colour, options.aa_compare_exponent);
+        };
+        const math::Color c = encoded(x, y);
         const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
         for (int k = 0; k < 4; ++k)
           if (nx[k] >= 0 && nx[k] < w && ny[k] >= 0 && ny[k] < h &&
-              color_distance(c, pixels[static_cast<size_t>(ny[k]) * w + nx[k]].colour) > options.aa_threshold)
+              color_distance(c, encoded(nx[k], ny[k])) >= options.aa_threshold)
             refine[static_cast<size_t>(y) * w + x] = 1;
       }
     const int n = options.aa_depth;
