@@ -44,3 +44,37 @@ TEST(ExplainPixelTest, SamplesAverageToTheRenderedPixelWithJitter) {
 
 }  // namespace
 }  // namespace snell::render::explain
+
+namespace snell::render::explain {
+namespace {
+
+// The renderer tries the last opaque blocker of each light first (the shadow cache); `explain` traces
+// without it. A blocker whose checker cells alternate opaque and fully transmitting, above a floor,
+// makes the cached object miss, block and let light through from one pixel to the next: every pixel must
+// still be the uncached colour.
+TEST(ExplainPixelTest, ShadowCacheLeavesEveryPixelAsTheUncachedTrace) {
+  const scene::Scene scene = test::parse(
+      "camera { location <0, 4, -5> look_at 0 }\n"
+      "light_source { <1, 8, -1> rgb 1 }\n"
+      "light_source { <-3, 6, -2> rgb 0.5 }\n"
+      "plane { y, 0 pigment { rgb 1 } }\n"
+      "box { <-1.5, 1, -1.5>, <1.5, 1.2, 1.5> pigment { checker rgb 0.5, rgbt <1, 0, 0, 1> scale 0.3 } }\n"
+      "sphere { <1.5, 2, 0>, 0.4 pigment { rgbf <0.2, 0.9, 0.2, 0.7> } }\n");
+  const auto accel = accel::make_accelerator("embree", scene);
+  RenderOptions o;
+  o.width = 24;
+  o.height = 18;
+  o.threads = 1;
+  const RenderResult rendered = Renderer(scene, *accel, o).render();
+  for (int y = 0; y < o.height; ++y)
+    for (int x = 0; x < o.width; ++x) {
+      const math::Color explained = explain_pixel(scene, *accel, o, x, y, 0).colour;
+      const math::Color pixel = rendered.image.at(x, y);
+      ASSERT_EQ(static_cast<float>(explained.r), static_cast<float>(pixel.r)) << x << "," << y;
+      ASSERT_EQ(static_cast<float>(explained.g), static_cast<float>(pixel.g)) << x << "," << y;
+      ASSERT_EQ(static_cast<float>(explained.b), static_cast<float>(pixel.b)) << x << "," << y;
+    }
+}
+
+}  // namespace
+}  // namespace snell::render::explain

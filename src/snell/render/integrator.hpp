@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "snell/accel/accelerator.hpp"
 #include "snell/math/color.hpp"
@@ -33,6 +34,9 @@ struct TraceContext {
   double hit_distance = math::kInfinity;
   /// Radiosity records this tile gathered (render/radiosity/solver.hpp).
   radiosity::TileRecords radiosity_tile;
+  /// Per light (by its index in Scene::lights): the object that last stopped one of its shadow rays, tried
+  /// first by the next one (POV-Ray's shadow cache, lighting.cpp). Neighbouring points usually share it.
+  std::vector<const scene::Object*> shadow_blockers;
 };
 
 class Integrator {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "snell/accel/indexed_objects.hpp"
+#include "snell/geometry/mesh.hpp"
 #include "snell/render/area_light.hpp"
 #include "snell/render/fog.hpp"
 #include "snell/render/glossy.hpp"
@@ -50,6 +52,14 @@ Color metallic_tint(double metallic, const Color& pigment, double cos_angle) {
 
 double max_abs(const Color& c) {
   return std::max(std::fabs(c.r), std::max(std::fabs(c.g), std::fabs(c.b)));
+}
+
+/// The scene-level object of a blocking hit, as the accelerator tests it; null for a mesh, whose own
+/// triangle tree Embree's native meshes never build (the cache must not build it either).
+const scene::Object* cacheable_blocker(const scene::SurfaceHit& hit) {
+  const scene::Object* object = hit.solid ? hit.solid : hit.object;
+  if (!object || (object->shape && dynamic_cast<const geometry::Mesh*>(object->shape.get()))) return nullptr;
+  return object;
 }
 
 material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
@@ -548,6 +558,16 @@ Color WhittedIntegrator::povray_subsurface_light(const ShadingPoint& sp, const s
   return povray_subsurface_radiance(query, accel_, context.rng, lights) * sp.opacity;
 }
 
+const scene::Object** WhittedIntegrator::cached_blocker(const scene::Light* source,
+                                                        TraceContext& context) const {
+  if (!source || context.observer || scene_.lights.empty()) return nullptr;
+  const auto index = static_cast<size_t>(source - scene_.lights.data());
+  if (source < scene_.lights.data() || index >= scene_.lights.size()) return nullptr;
+  if (context.shadow_blockers.size() != scene_.lights.size())
+    context.shadow_blockers.assign(scene_.lights.size(), nullptr);
+  return &context.shadow_blockers[index];
+}
+
 Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, const Vec3& dir,
                                        double distance, Color light, TraceContext& context,
                                        const scene::Light* source) const {
@@ -555,6 +575,15 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   Vec3 origin = offset_origin(point, dot(normal, dir) >= 0 ? normal : -normal);
   double remaining = distance - dot(origin - point, dir);
   ++context.counters.shadow;
+  // Any opaque blocker makes the light black, whatever else lies on the way, so the last one this light
+  // met is tried alone before the whole scene. (Not while an observer records the blockers in order.)
+  const scene::Object** cached = cached_blocker(source, context);
+  if (cached && *cached) {
+    scene::SurfaceHit hit;
+    if (accel::test_object(**cached, {origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit) &&
+        !pigment_at(hit).is_transparent())
+      return Color(0);
+  }
   // Pass through transparent blockers, tinting by each one's transmitted colour (trace.cpp,
   // TracePointLightShadowRay / ComputeShadowColour). Bounded so that coincident surfaces cannot loop.
   for (int crossings = 0; crossings < 64 && remaining > 0; ++crossings) {
@@ -562,7 +591,10 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     if (!accel_.intersect({origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit)) break;
     const material::Rgbft c = pigment_at(hit);
     if (context.observer) context.observer->shadow_blocker(hit, !c.is_transparent());
-    if (!c.is_transparent()) return Color(0);
+    if (!c.is_transparent()) {
+      if (cached) *cached = cacheable_blocker(hit);
+      return Color(0);
+    }
     if (caustics_ && source && caustics_->replaces_shadow(*source, hit.solid ? *hit.solid : *hit.object))
       return Color(0);
     light *= transmitted_color(c);
