@@ -161,3 +161,32 @@ TEST(PolynomialTest, MaxRootsKeepsTheSmallest) {
   ASSERT_EQ(real_roots(from_roots({0.25, 0.75}), 0, 1, out, 1), 1);  // the closed-form quadratic too
   EXPECT_NEAR(out[0], 0.25, 1e-15);
 }
+
+TEST(PolynomialTest, SexticWithSixRootsAndWindowsBesideThem) {
+  // The lathe's equation is a sextic: all six roots, and windows that end just short of a root (the sign
+  // test must not drop a window that holds one, nor invent one).
+  const std::vector<double> roots{-0.9, -0.3, 0.1, 0.45, 0.8, 1.0000001};
+  const auto c = from_roots(roots, 2.5);
+  const auto all = roots_in(c, -1, 2);
+  ASSERT_EQ(all.size(), 6u);
+  for (size_t i = 0; i < roots.size(); ++i) EXPECT_NEAR(all[i], roots[i], 1e-9) << i;
+  EXPECT_TRUE(roots_in(c, 0.81, 1.0).empty());
+  EXPECT_EQ(roots_in(c, 0.81, 1.0000002).size(), 1u);
+  EXPECT_EQ(roots_in(c, 0.0999999, 0.1000001).size(), 1u);
+  EXPECT_TRUE(roots_in(c, 0.1000001, 0.44).empty());
+}
+
+TEST(PolynomialTest, TouchingRootOfASexticIsFoundOnce) {
+  // (x - 0.5)^2 (x + 2)(x - 3)(x^2 + 1): touches zero at 0.5 (a ray grazing a lathe's rim).
+  auto c = from_roots({0.5, 0.5, -2, 3});
+  std::vector<double> with_complex(c.size() + 2, 0.0);
+  for (size_t i = 0; i < c.size(); ++i) {
+    with_complex[i] += c[i];
+    with_complex[i + 2] += c[i];
+  }
+  const auto r = roots_in(with_complex, -5, 5);
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_NEAR(r[0], -2, 1e-10);
+  EXPECT_NEAR(r[1], 0.5, 1e-7);
+  EXPECT_NEAR(r[2], 3, 1e-10);
+}

@@ -1,8 +1,9 @@
 #pragma once
 // Real roots of low-degree polynomials inside an interval, for shapes whose ray equation is a polynomial
-// in t (torus, blob, later quartic/poly). Roots are isolated with a Sturm sequence (the count of distinct
-// real roots in (a, b] is the drop in sign changes, Sturm 1829) and then refined by bracketed Newton
-// iteration, or by Sturm-count bisection for even-multiplicity roots that do not change sign.
+// in t (torus, blob, quartic/poly, lathe, sor, prism). A Bernstein-form sign test first drops windows
+// without roots; roots are then isolated by the roots of the derivatives (p is monotonic between them) and
+// refined by bracketed Newton iteration; critical points where p vanishes are the roots of even
+// multiplicity. See polynomial.cpp for the references.
 #include <array>
 #include <span>
 
