@@ -6,8 +6,6 @@
 // Each rank writes the frames it renders (the output folder is shared, as the scene file is), so no pixels
 // travel. Rank 0 serves the queue on a second thread, polling like the tile queue, and renders frames on its
 // main thread; in this mode frames render without MPI (render_alone), so only the queue thread calls MPI.
-#include <mpi.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -15,6 +13,7 @@
 #include <thread>
 
 #include "cli/distributed.hpp"
+#include "cli/mpi/mpi_transport.hpp"
 
 namespace snell::cli::distributed {
 
@@ -26,13 +25,13 @@ constexpr int kNoMoreFrames = -1;
 int work_frames(const std::function<int(int)>& render_frame) {
   int code = 0;
   while (code == 0) {
-    MPI_Send(nullptr, 0, MPI_INT, 0, kFrameRequest, MPI_COMM_WORLD);
+    mpi::send_empty(0, kFrameRequest);
     int index = kNoMoreFrames;
-    MPI_Recv(&index, 1, MPI_INT, 0, kFrameAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    mpi::recv(&index, 1, 0, kFrameAssign);
     if (index == kNoMoreFrames) break;
     code = render_frame(index);
   }
-  MPI_Send(&code, 1, MPI_INT, 0, kFrameDone, MPI_COMM_WORLD);
+  mpi::send(&code, 1, 0, kFrameDone);
   return code;
 }
 
@@ -54,27 +53,25 @@ int lead_frames(int count, const std::atomic<bool>* cancel, const std::function<
   std::thread queue([&] {
     const int workers = size() - 1;
     for (int done = 0; done < workers;) {
-      int ready = 0;
-      MPI_Status status;
-      MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &ready, &status);
-      if (!ready) {
+      const mpi::Waiting message = mpi::probe_any();
+      if (!message.ready) {
         std::this_thread::sleep_for(std::chrono::microseconds(500));
         continue;
       }
-      const int from = status.MPI_SOURCE;
-      if (status.MPI_TAG == kFrameRequest) {
-        MPI_Recv(nullptr, 0, MPI_INT, from, kFrameRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      const int from = message.from;
+      if (message.tag == kFrameRequest) {
+        mpi::recv_empty(from, kFrameRequest);
         const int index = take();
-        MPI_Send(&index, 1, MPI_INT, from, kFrameAssign, MPI_COMM_WORLD);
-      } else if (status.MPI_TAG == kFrameDone) {
+        mpi::send(&index, 1, from, kFrameAssign);
+      } else if (message.tag == kFrameDone) {
         int code = 0;
-        MPI_Recv(&code, 1, MPI_INT, from, kFrameDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        mpi::recv(&code, 1, from, kFrameDone);
         if (code != 0) close();
         std::lock_guard lock(queue_mutex);
         worst = std::max(worst, code);
         ++done;
       } else {
-        MPI_Recv(nullptr, 0, MPI_BYTE, from, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        mpi::recv_empty(from, message.tag);
       }
     }
   });
@@ -98,12 +95,12 @@ int render_frames(int count, const std::atomic<bool>* cancel, const std::functio
 }
 
 int broadcast_from_lead(int value) {
-  if (size() > 1) MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (size() > 1) mpi::api().broadcast(&value, 1, kSnellMpiInt, 0);
   return value;
 }
 
 void abort_all(int code) {
-  if (size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
+  if (size() > 1) mpi::api().abort(code);
   std::exit(code);
 }
 

@@ -6,8 +6,6 @@
 //   worker -> 0  kDone     uint64 ray counters[5]   the worker has stopped; its statistics
 // Rank 0 polls with MPI_Iprobe and short sleeps rather than a blocking receive, which in Open MPI spins and
 // would take a core from rank 0's own render thread.
-#include <mpi.h>
-
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -17,6 +15,7 @@
 #include <thread>
 
 #include "cli/distributed.hpp"
+#include "cli/mpi/mpi_transport.hpp"
 
 namespace snell::cli::distributed {
 
@@ -52,15 +51,15 @@ std::vector<float> tile_pixels(const io::Image& image, const render::PixelRect& 
 render::RenderStats work(const Job& job, io::Image& image) {
   std::map<int, render::Tile> by_index;
   for (const render::Tile& t : job.tiles) by_index[t.index] = t;
-  std::mutex mpi;  // MPI_THREAD_SERIALIZED: one MPI call at a time
+  std::mutex mpi_lock;  // MPI_THREAD_SERIALIZED: one MPI call at a time
   bool exhausted = false;
   render::RenderOptions options = job.options;
   options.tile_source = [&]() -> std::optional<render::Tile> {
-    std::lock_guard lock(mpi);
+    std::lock_guard lock(mpi_lock);
     if (exhausted) return std::nullopt;
-    MPI_Send(nullptr, 0, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
+    mpi::send_empty(0, kRequest);
     int index = kNoMoreTiles;
-    MPI_Recv(&index, 1, MPI_INT, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    mpi::recv(&index, 1, 0, kAssign);
     const auto it = by_index.find(index);
     if (index == kNoMoreTiles || it == by_index.end()) {
       exhausted = true;
@@ -71,13 +70,13 @@ render::RenderStats work(const Job& job, io::Image& image) {
   options.tile_done = [&](const render::Tile& t, const io::Image& img) {
     const std::vector<float> pixels = tile_pixels(img, t.rect);
     const int header[5] = {t.index, t.rect.x0, t.rect.y0, t.rect.x1, t.rect.y1};
-    std::lock_guard lock(mpi);
-    MPI_Send(header, 5, MPI_INT, 0, kHeader, MPI_COMM_WORLD);
-    MPI_Send(pixels.data(), static_cast<int>(pixels.size()), MPI_FLOAT, 0, kPixels, MPI_COMM_WORLD);
+    std::lock_guard lock(mpi_lock);
+    mpi::send(header, 5, 0, kHeader);
+    mpi::send(pixels.data(), static_cast<int>(pixels.size()), 0, kPixels);
   };
   render::RenderStats stats = render::Renderer(job.scene, job.accelerator, options).render_into(image);
   const Counters counters = pack(stats);
-  MPI_Send(counters.data(), static_cast<int>(counters.size()), MPI_UINT64_T, 0, kDone, MPI_COMM_WORLD);
+  mpi::send(counters.data(), static_cast<int>(counters.size()), 0, kDone);
   return stats;
 }
 
@@ -103,26 +102,23 @@ render::RenderStats lead(const Job& job, io::Image& image) {
       std::lock_guard lock(queue_mutex);
       closed = true;
     }
-    int ready = 0;
-    MPI_Status status;
-    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &ready, &status);
-    if (!ready) {
+    const mpi::Waiting message = mpi::probe_any();
+    if (!message.ready) {
       std::this_thread::sleep_for(std::chrono::microseconds(200));
       continue;
     }
-    const int from = status.MPI_SOURCE;
-    if (status.MPI_TAG == kRequest) {
-      MPI_Recv(nullptr, 0, MPI_INT, from, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    const int from = message.from;
+    if (message.tag == kRequest) {
+      mpi::recv_empty(from, kRequest);
       const std::optional<render::Tile> tile = take();
       const int index = tile ? tile->index : kNoMoreTiles;
-      MPI_Send(&index, 1, MPI_INT, from, kAssign, MPI_COMM_WORLD);
-    } else if (status.MPI_TAG == kHeader) {
+      mpi::send(&index, 1, from, kAssign);
+    } else if (message.tag == kHeader) {
       int h[5];
-      MPI_Recv(h, 5, MPI_INT, from, kHeader, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      mpi::recv(h, 5, from, kHeader);
       const render::Tile tile{h[0], {h[1], h[2], h[3], h[4]}};
       std::vector<float> pixels(static_cast<size_t>(tile.rect.area()) * 3);
-      MPI_Recv(pixels.data(), static_cast<int>(pixels.size()), MPI_FLOAT, from, kPixels, MPI_COMM_WORLD,
-               MPI_STATUS_IGNORE);
+      mpi::recv(pixels.data(), static_cast<int>(pixels.size()), from, kPixels);
       size_t k = 0;
       for (int y = tile.rect.y0; y < tile.rect.y1; ++y)
         for (int x = tile.rect.x0; x < tile.rect.x1; ++x, k += 3) {
@@ -131,14 +127,13 @@ render::RenderStats lead(const Job& job, io::Image& image) {
         }
       ++total.tiles_rendered;
       job.tile_done(tile);
-    } else if (status.MPI_TAG == kDone) {
+    } else if (message.tag == kDone) {
       Counters c{};
-      MPI_Recv(c.data(), static_cast<int>(c.size()), MPI_UINT64_T, from, kDone, MPI_COMM_WORLD,
-               MPI_STATUS_IGNORE);
+      mpi::recv(c.data(), static_cast<int>(c.size()), from, kDone);
       add(total, c);
       ++done;
     } else {
-      MPI_Recv(nullptr, 0, MPI_BYTE, from, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      mpi::recv_empty(from, message.tag);
     }
   }
   local_render.join();

@@ -1,10 +1,12 @@
 // MPI start-up for `mpirun ... snell ...`. MPI is started only when a launcher set up this process (Open MPI,
-// PMI or PMIx variables), so a plain `snell` run never pays for MPI_Init or needs a launcher.
-#include <mpi.h>
-
+// PMI or PMIx variables), so a plain `snell` run never loads Open MPI, pays for MPI_Init or needs a launcher.
+#include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "cli/distributed.hpp"
+#include "cli/mpi/mpi_transport.hpp"
+#include "snell/io/plugin_loader.hpp"
 
 namespace snell::cli::distributed {
 
@@ -13,6 +15,7 @@ namespace {
 bool g_started = false;
 int g_rank = 0;
 int g_size = 1;
+SnellMpiApi g_api{};
 
 bool launched_by_mpirun() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
@@ -24,17 +27,28 @@ bool launched_by_mpirun() {
 
 Session::Session(int& argc, char**& argv) {
   if (!launched_by_mpirun()) return;
-  // Render threads call MPI one at a time (under a lock), never two at once.
-  int provided = 0;
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
+  std::string error;
+  void* plugin = io::open_plugin("libsnell_mpi.so", error);
+  const auto get_api = reinterpret_cast<SnellMpiGetApi>(io::plugin_symbol(plugin, "snell_mpi_api"));
+  if (!get_api || get_api(&g_api) != 0) {
+    // Every rank fails alike, so each says why and stops (there is no MPI to abort the others with).
+    std::fprintf(stderr, "snell: error: started by mpirun, but the MPI plugin cannot be loaded: %s\n",
+                 plugin ? "libsnell_mpi.so lacks snell_mpi_api" : error.c_str());
+    std::exit(1);
+  }
+  g_api.init(&argc, &argv, &g_rank, &g_size);
   g_started = true;
-  MPI_Comm_rank(MPI_COMM_WORLD, &g_rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &g_size);
 }
 
 Session::~Session() {
-  if (g_started) MPI_Finalize();
+  if (g_started) g_api.finalize();
 }
+
+namespace mpi {
+const SnellMpiApi& api() {
+  return g_api;
+}
+}  // namespace mpi
 
 int rank() {
   return g_rank;
