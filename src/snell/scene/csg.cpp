@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <stdexcept>
 
 #include "snell/scene/object.hpp"
@@ -23,6 +24,29 @@ math::Bounds3 padded(const math::Bounds3& b) {
   }
   return r;
 }
+
+/// A hit list reused by later calls on this thread, one per level of CSG nesting (a child may be CSG
+/// itself and use its own while the parent's is live), so that testing a ray allocates nothing.
+class ScratchHits {
+ public:
+  ScratchHits() : list_(take()) { list_.clear(); }
+  ~ScratchHits() { --depth(); }
+  ScratchHits(const ScratchHits&) = delete;
+  ScratchHits& operator=(const ScratchHits&) = delete;
+  std::vector<SurfaceHit>& list() { return list_; }
+
+ private:
+  static size_t& depth() {
+    thread_local size_t level = 0;
+    return level;
+  }
+  static std::vector<SurfaceHit>& take() {
+    thread_local std::deque<std::vector<SurfaceHit>> pool;  // a deque keeps references on growth
+    if (depth() == pool.size()) pool.emplace_back();
+    return pool[depth()++];
+  }
+  std::vector<SurfaceHit>& list_;
+};
 
 }  // namespace
 
@@ -81,7 +105,8 @@ bool Csg::keeps(size_t i, const math::Vec3& p, double time) const {
 bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
   bool found = false;
   if (!clip_to_bounds(ray, t_min, t_max)) return false;
-  std::vector<SurfaceHit> hits;
+  ScratchHits scratch;
+  std::vector<SurfaceHit>& hits = scratch.list();
   for (size_t i = 0; i < surface_children_; ++i) {
     if (!may_hit_child(i, ray, t_min, t_max)) continue;
     const Object& child = *children_[i];
@@ -108,7 +133,8 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
 void Csg::all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
   const size_t first = hits.size();
   if (!clip_to_bounds(ray, t_min, t_max)) return;
-  std::vector<SurfaceHit> mine;
+  ScratchHits scratch;
+  std::vector<SurfaceHit>& mine = scratch.list();
   for (size_t i = 0; i < surface_children_; ++i) {
     if (!may_hit_child(i, ray, t_min, t_max)) continue;
     mine.clear();

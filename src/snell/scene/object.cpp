@@ -82,7 +82,9 @@ void Object::all_hits_still(const Ray& ray, double t_min, double t_max, std::vec
     }
     return;
   }
-  geometry::HitList local;
+  // Reused on this thread (no allocation per ray): a shape's all_hits never reaches another object's.
+  thread_local geometry::HitList local;
+  local.clear();
   shape->all_hits(transform.inverse_ray(ray), t_min, t_max, local);
   for (const geometry::LocalHit& l : local) hits.push_back(to_world(ray, l));
 }
