@@ -24,6 +24,7 @@
 #include "cli/video.hpp"
 #include "cli/watch.hpp"
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/embree_accelerator.hpp"
 #include "snell/accel/object_test_counter.hpp"
 #include "snell/io/image_backend.hpp"
 #include "snell/io/image_file.hpp"
@@ -370,6 +371,8 @@ int render(CliOptions& o) {
   // Load the image plugin while the scene is parsed and rendered (snell/io/oiio_plugin_abi.hpp); PNG output
   // does without it (a scene's image maps load it when they are parsed).
   if (!o.parse_only && io::writes_through_plugin(o.output)) io::preload_image_backend();
+  if (!o.parse_only && (o.accel == "auto" || o.accel == "embree"))
+    accel::warm_up_embree();  // overlaps parsing
   const int code = render_frames(o, plan, announce, &g_interrupted, [&](const FrameTask& task) {
     try {
       return render_frame(o, plan, bounds, task);

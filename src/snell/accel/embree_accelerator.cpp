@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,23 @@
 namespace snell::accel {
 
 namespace {
+
+std::once_flag g_warm_up_started;
+std::shared_future<void> g_warm_up;
+
+/// A throwaway device and an empty scene: the first commit of a process sets up Embree's scheduler.
+void set_up_embree() {
+  RTCDevice device = rtcNewDevice(nullptr);
+  if (!device) return;  // the real build reports the error
+  RTCScene scene = rtcNewScene(device);
+  rtcCommitScene(scene);
+  rtcReleaseScene(scene);
+  rtcReleaseDevice(device);
+}
+
+void wait_for_warm_up() {
+  if (g_warm_up.valid()) g_warm_up.wait();
+}
 
 using math::Bounds3;
 using math::Ray;
@@ -163,6 +181,7 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
     s.scene_bounds = Bounds3(s.scene_bounds.lo - Vec3(s.pad), s.scene_bounds.hi + Vec3(s.pad));
   }
 
+  wait_for_warm_up();  // two first-time set-ups at once would each pay it
   s.device = rtcNewDevice(nullptr);
   if (!s.device)
     throw std::runtime_error("embree: cannot create device (error " +
@@ -252,6 +271,11 @@ bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, sc
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(s.scene, &q.base, &rh);
   return found || q.found;
+}
+
+void warm_up_embree() {
+  std::call_once(g_warm_up_started,
+                 [] { g_warm_up = std::async(std::launch::async, set_up_embree).share(); });
 }
 
 }  // namespace snell::accel

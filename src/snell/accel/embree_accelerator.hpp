@@ -32,4 +32,9 @@ class EmbreeAccelerator final : public Accelerator {
   AcceleratorStats stats_;
 };
 
+/// Starts Embree's one-time set-up (its task scheduler; about 5 ms, paid by the first device and scene of
+/// a process) on a background thread, so that it overlaps parsing; the first EmbreeAccelerator waits for
+/// it. Call early (the CLI does before it parses).
+void warm_up_embree();
+
 }  // namespace snell::accel
