@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "snell/math/constants.hpp"
 
@@ -31,8 +32,16 @@ Vec3 light_axis(const scene::Light& light) {
 double spot_attenuation(const scene::Light& light, double cos_theta) {
   if (cos_theta <= 0) return 0;
   double a = light.tightness != 0 ? std::pow(cos_theta, light.tightness) : 1.0;
-  const double cos_radius = std::cos(math::radians(light.radius));
-  const double cos_falloff = std::cos(math::radians(std::max(light.falloff, light.radius)));
+  // The cone's cosines, kept from the last call on this thread: the same spotlight asks again and again,
+  // and two cos() per lit point were 7% of a spotlight scene's time.
+  thread_local double last_radius = std::numeric_limits<double>::quiet_NaN(), last_falloff = 0;
+  thread_local double cos_radius = 1, cos_falloff = 1;
+  if (!(light.radius == last_radius && light.falloff == last_falloff)) {
+    last_radius = light.radius;
+    last_falloff = light.falloff;
+    cos_radius = std::cos(math::radians(light.radius));
+    cos_falloff = std::cos(math::radians(std::max(light.falloff, light.radius)));
+  }
   if (cos_radius > 0 && cos_theta < cos_radius) a *= cone_spline(cos_falloff, cos_radius, cos_theta);
   return a;
 }
