@@ -47,8 +47,31 @@ bool Torus::gather(const Ray& ray, HitBuffer<4>& hits, int max_roots) const {
   const double c2 = rb * rb - length_squared(o);
   if (c2 < 0) return false;
   const double half = std::sqrt(c2);
-  const double u_lo = std::max(-half * 1.000001, f + hits.t_min() * dl);
-  const double u_hi = std::min(half * 1.000001, f + hits.t_max() * dl);
+  double u_lo = std::max(-half * 1.000001, f + hits.t_min() * dl);
+  double u_hi = std::min(half * 1.000001, f + hits.t_max() * dl);
+  if (!(u_lo < u_hi)) return false;
+  // The torus lies within the slab |y| <= minor and the cylinder x^2 + z^2 <= (major + minor)^2 (POV-Ray
+  // also tests a bounding cylinder first): the part of the window inside both is all the quartic needs,
+  // and a smaller window is more often settled by real_roots' sign test alone. Widened by 1e-6 relative
+  // so that clipping never drops a root on the boundary.
+  const double slab = minor_ * 1.000001;
+  if (dn.y != 0) {
+    const double a = (-slab - o.y) / dn.y, b = (slab - o.y) / dn.y;
+    u_lo = std::max(u_lo, std::min(a, b));
+    u_hi = std::min(u_hi, std::max(a, b));
+  } else if (std::fabs(o.y) > slab) {
+    return false;
+  }
+  const double radial = dn.x * dn.x + dn.z * dn.z;
+  if (radial > 1e-12) {
+    // x^2 + z^2 along the ray: radial u^2 + 2 b u + c, with o perpendicular to dn.
+    const double b = o.x * dn.x + o.z * dn.z, c = o.x * o.x + o.z * o.z - rb * rb * 1.000002;
+    const double disc = b * b - radial * c;
+    if (disc < 0) return false;
+    const double root = std::sqrt(disc);
+    u_lo = std::max(u_lo, (-b - root) / radial);
+    u_hi = std::min(u_hi, (-b + root) / radial);
+  }
   if (!(u_lo < u_hi)) return false;
 
   const std::array<double, 5> coeffs = torus_quartic(o, dn, major_, minor_);
