@@ -19,6 +19,9 @@ class Pigment {
   virtual Rgbft at(const PatternPoint& point) const = 0;
   /// True when `at` returns the same colour everywhere (lets the integrator skip the evaluation).
   virtual bool is_constant() const { return false; }
+  /// False only when `at` can never give filter or transmit above 0: a shadow ray stopped by the surface is
+  /// then black without evaluating the pigment. True when unsure.
+  virtual bool may_transmit() const { return true; }
 };
 
 class SolidPigment final : public Pigment {
@@ -26,6 +29,7 @@ class SolidPigment final : public Pigment {
   explicit SolidPigment(const Rgbft& color) : color_(color) {}
   Rgbft at(const PatternPoint&) const override { return color_; }
   bool is_constant() const override { return true; }
+  bool may_transmit() const override { return color_.is_transparent(); }
   const Rgbft& color() const { return color_; }
 
  private:

@@ -97,6 +97,12 @@ const Finish& Texture::finish_at(const math::Vec3& world_point) const {
   return dominant->finish_at(pp.p);
 }
 
+bool Texture::may_transmit() const {
+  for (const Texture* layer = this; layer; layer = layer->below.get())
+    if (!layer->selector && layer->pigment && !layer->pigment->may_transmit()) return false;
+  return true;
+}
+
 Rgbft Texture::pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
                           const math::Vec2& uv) const {
   if (!below) return layer_pigment(*this, world_point, world_normal, uv);

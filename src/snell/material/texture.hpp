@@ -55,6 +55,10 @@ struct Texture {
   math::Vec3 shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
                             const math::Vec2& uv) const;
 
+  /// False only when no point of the stack can let light through: some layer's pigment never transmits
+  /// (it stops whatever the layers above pass on). Texture maps count as transmitting (not analysed).
+  bool may_transmit() const;
+
   /// This layer alone, without the layers below: its pigment, and `world_normal` bent by its own
   /// `normal {}` (unchanged without one). POV-Ray lights each layer with its own finish and normal
   /// (trace.cpp, ComputeLightedTexture), which render/layered_shading.cpp follows.

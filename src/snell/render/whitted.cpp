@@ -67,6 +67,11 @@ material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
   return hit.object->texture->pigment_at(hit.texture_point, hit.normal, hit.uv);
 }
 
+/// Whether the surface at `hit` stops light: known from the texture alone where it never transmits.
+bool opaque_at(const scene::SurfaceHit& hit) {
+  return !hit.object->texture->may_transmit() || !pigment_at(hit).is_transparent();
+}
+
 /// Tells the observer the emitted and ambient parts of a surface's own light; `colour` is the pigment
 /// scaled by opacity.
 void report_own_light(TraceObserver& observer, const Color& colour, const material::Finish& f,
@@ -581,7 +586,7 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   if (cached && *cached) {
     scene::SurfaceHit hit;
     if (accel::test_object(**cached, {origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit) &&
-        !pigment_at(hit).is_transparent())
+        opaque_at(hit))
       return Color(0);
   }
   // Pass through transparent blockers, tinting by each one's transmitted colour (trace.cpp,
@@ -589,6 +594,11 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   for (int crossings = 0; crossings < 64 && remaining > 0; ++crossings) {
     scene::SurfaceHit hit;
     if (!accel_.intersect({origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit)) break;
+    // A texture that never transmits stops the ray without its pigment being evaluated.
+    if (!context.observer && !hit.object->texture->may_transmit()) {
+      if (cached) *cached = cacheable_blocker(hit);
+      return Color(0);
+    }
     const material::Rgbft c = pigment_at(hit);
     if (context.observer) context.observer->shadow_blocker(hit, !c.is_transparent());
     if (!c.is_transparent()) {

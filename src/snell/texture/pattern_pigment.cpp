@@ -43,6 +43,23 @@ material::Rgbft PatternPigment::at(const material::PatternPoint& point) const {
   return spec_.color_map->at(v);
 }
 
+bool PatternPigment::may_transmit() const {
+  auto any = [](const auto& pigments, auto pigment_of) {
+    for (const auto& entry : pigments)
+      if (const PigmentPtr& p = pigment_of(entry); !p || p->may_transmit()) return true;
+    return false;
+  };
+  if (spec_.block_pattern)
+    return any(spec_.block_entries, [](const PigmentPtr& p) -> const PigmentPtr& { return p; });
+  if (spec_.pigment_map)
+    return any(spec_.pigment_map->entries(),
+               [](const PigmentMap::Entry& e) -> const PigmentPtr& { return e.second; });
+  if (!spec_.color_map) return true;
+  for (const ColorMap::Entry& entry : spec_.color_map->entries())
+    if (entry.second.is_transparent()) return true;
+  return false;
+}
+
 material::Rgbft TransformedPigment::at(const material::PatternPoint& point) const {
   material::PatternPoint moved = point;
   moved.p = transform_.inverse_point(point.p);

@@ -50,6 +50,8 @@ class PatternPigment final : public material::Pigment {
   /// Throws std::invalid_argument when the spec is inconsistent (no pattern, wrong entry count).
   explicit PatternPigment(PatternSpec spec);
   material::Rgbft at(const material::PatternPoint& point) const override;
+  /// A colour map blends its entries, so it transmits only if an entry does; likewise the sub-pigments.
+  bool may_transmit() const override;
   const PatternSpec& spec() const { return spec_; }
 
  private:
@@ -64,6 +66,7 @@ class TransformedPigment final : public material::Pigment {
       : inner_(std::move(inner)), transform_(transform) {}
   material::Rgbft at(const material::PatternPoint& point) const override;
   bool is_constant() const override { return inner_->is_constant(); }
+  bool may_transmit() const override { return inner_->may_transmit(); }
 
  private:
   PigmentPtr inner_;
@@ -77,6 +80,7 @@ class UvMappedPigment final : public material::Pigment {
   explicit UvMappedPigment(PigmentPtr inner) : inner_(std::move(inner)) {}
   material::Rgbft at(const material::PatternPoint& point) const override;
   bool is_constant() const override { return inner_->is_constant(); }
+  bool may_transmit() const override { return inner_->may_transmit(); }
 
  private:
   PigmentPtr inner_;
