@@ -2,6 +2,7 @@
 // POV-Ray `isosurface` (POV-Ray 3.7 reference, "Isosurface Object"): the surface where a user function
 // equals `threshold`, inside where it is below, cut out of a box or sphere container.
 #include <atomic>
+#include <cstdint>
 #include <memory>
 
 #include "snell/function/function.hpp"
@@ -44,6 +45,8 @@ class Isosurface final : public Shape {
   /// The steepest slope |grad f| seen between samples along rays so far (POV-Ray compares it with
   /// max_gradient after rendering: steeper means holes, much gentler means wasted time).
   double steepest_slope() const { return steepest_.load(std::memory_order_relaxed); }
+  /// How many times f was evaluated so far (march, refinement and normals), for measuring the march.
+  std::uint64_t evaluations() const { return evaluations_.load(std::memory_order_relaxed); }
   const IsosurfaceSettings& settings() const { return settings_; }
 
  private:
@@ -55,6 +58,7 @@ class Isosurface final : public Shape {
 
   IsosurfaceSettings settings_;
   mutable std::atomic<double> steepest_{0};
+  mutable std::atomic<std::uint64_t> evaluations_{0};
 };
 
 /// POV-Ray's `evaluate P0, P1, P2` asks for an adaptive max_gradient. snell stays deterministic by

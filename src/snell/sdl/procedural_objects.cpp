@@ -3,8 +3,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "snell/geometry/bicubic_patch.hpp"
 #include "snell/geometry/box.hpp"
@@ -114,6 +116,12 @@ ParsedObject Parser::parse_isosurface(const Token& keyword) {
     const std::string where = keyword.where.to_string();
     // With `evaluate` the gradient was measured, so there is nothing to advise (as in POV-Ray).
     if (!evaluate) scene_.render_notes.push_back([where, iso] { return gradient_warning(where, *iso); });
+    // SNELL_ISOSURFACE_STATS=1 reports how often each isosurface evaluated its function
+    // (docs/performance.md).
+    if (std::getenv("SNELL_ISOSURFACE_STATS"))
+      scene_.render_notes.push_back([where, iso] {
+        return where + ": note: " + std::to_string(iso->evaluations()) + " function evaluations";
+      });
     return iso;
   });
 }
