@@ -51,6 +51,7 @@ class RegisterCode {
  private:
   friend class RegisterCodeBuilder;
   RegisterCode() = default;
+  double run_in(double* registers, const double* args) const;
 
   // Registers: [0, constants) hold constants_, then the parameters, then one per instruction.
   std::vector<double> constants_;

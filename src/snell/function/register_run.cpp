@@ -8,17 +8,45 @@
 
 namespace snell::function {
 
+namespace detail {
+
+double call_with_registers(const RegisterInstruction& in, const double* r, const std::uint32_t* arguments) {
+  std::array<double, 32> fixed;
+  std::vector<double> heap;
+  double* args = fixed.data();
+  if (in.b > fixed.size()) {
+    heap.resize(in.b);
+    args = heap.data();
+  }
+  for (std::uint32_t i = 0; i < in.b; ++i) args[i] = r[arguments[in.a + i]];
+  switch (in.op) {
+    case Op::native:
+      return in.native(args);
+    case Op::call_component: {
+      std::array<double, Function::kMaxComponents> out{};
+      in.callee->call_vector(args, out.data());
+      return out[in.component];
+    }
+    default:
+      return in.callee->call(args);
+  }
+}
+
+}  // namespace detail
+
 double RegisterCode::run(const double* args) const {
   // Small codes (nearly all) run in a fixed register file; the rare large one on the heap. Not zeroed:
   // every register is written before it is read.
-  std::array<double, 256> fixed;
-  std::vector<double> heap;
-  const std::size_t size = constants_.size() + arity_ + code_.size();
-  double* r = fixed.data();
-  if (size > fixed.size()) {
-    heap.resize(size);
-    r = heap.data();
+  constexpr std::size_t kFixed = 256;
+  if (constants_.size() + arity_ + code_.size() <= kFixed) {
+    std::array<double, kFixed> fixed;
+    return run_in(fixed.data(), args);
   }
+  std::vector<double> heap(constants_.size() + arity_ + code_.size());
+  return run_in(heap.data(), args);
+}
+
+double RegisterCode::run_in(double* r, const double* args) const {
   // Plain loops: these copies are a few doubles, shorter than a call of memcpy.
   const std::size_t constants = constants_.size();
   for (std::size_t i = 0; i < constants; ++i) r[i] = constants_[i];

@@ -1,36 +1,13 @@
 #pragma once
 // One register instruction at one point: shared by RegisterCode::run and by the constant folding of
 // its translation, so that a folded value is exactly the value the evaluator would compute.
-#include <array>
-#include <vector>
-
 #include "snell/function/register_code.hpp"
 
 namespace snell::function::detail {
 
-/// Calls `in`'s callee with the registers that arguments[in.a .. in.a + in.b) name.
-inline double call_with_registers(const RegisterInstruction& in, const double* r,
-                                  const std::uint32_t* arguments) {
-  std::array<double, 32> fixed;
-  std::vector<double> heap;
-  double* args = fixed.data();
-  if (in.b > fixed.size()) {
-    heap.resize(in.b);
-    args = heap.data();
-  }
-  for (std::uint32_t i = 0; i < in.b; ++i) args[i] = r[arguments[in.a + i]];
-  switch (in.op) {
-    case Op::native:
-      return in.native(args);
-    case Op::call_component: {
-      std::array<double, Function::kMaxComponents> out{};
-      in.callee->call_vector(args, out.data());
-      return out[in.component];
-    }
-    default:
-      return in.callee->call(args);
-  }
-}
+/// Calls `in`'s callee with the registers that arguments[in.a .. in.a + in.b) name (register_run.cpp;
+/// kept out of line so that the arithmetic loop stays small).
+double call_with_registers(const RegisterInstruction& in, const double* r, const std::uint32_t* arguments);
 
 /// The value of `in`, its operands read from registers `r`.
 inline double step(const RegisterInstruction& in, const double* r, const std::uint32_t* arguments) {
