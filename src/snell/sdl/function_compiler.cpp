@@ -8,7 +8,6 @@
 
 #include "snell/function/internals.hpp"
 #include "snell/math/constants.hpp"
-#include "snell/math/fast_trig.hpp"
 #include "snell/sdl/parser.hpp"
 
 namespace snell::sdl {
@@ -31,7 +30,7 @@ const Builtin kBuiltins[] = {
     {"atan", [](double a) { return std::atan(a); }, nullptr},
     {"atanh", [](double a) { return std::atanh(a); }, nullptr},
     {"ceil", [](double a) { return std::ceil(a); }, nullptr},
-    {"cos", [](double a) { return math::fast_cos(a); }, nullptr},  // math/fast_trig.hpp: no libm call
+    {"cos", [](double a) { return std::cos(a); }, nullptr},
     {"cosh", [](double a) { return std::cosh(a); }, nullptr},
     {"degrees", [](double a) { return a * 180 / math::kPi; }, nullptr},
     {"exp", [](double a) { return std::exp(a); }, nullptr},
@@ -40,7 +39,7 @@ const Builtin kBuiltins[] = {
     {"ln", [](double a) { return std::log(a); }, nullptr},
     {"log", [](double a) { return std::log10(a); }, nullptr},
     {"radians", [](double a) { return a * math::kPi / 180; }, nullptr},
-    {"sin", [](double a) { return math::fast_sin(a); }, nullptr},
+    {"sin", [](double a) { return std::sin(a); }, nullptr},
     {"sinh", [](double a) { return std::sinh(a); }, nullptr},
     {"sqr", [](double a) { return a * a; }, nullptr},
     {"sqrt", [](double a) { return std::sqrt(a); }, nullptr},
