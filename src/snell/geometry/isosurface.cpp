@@ -63,12 +63,16 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   const double speed = length(ray.direction);  // local length per unit of t
   const double accuracy = settings_.accuracy;  // in t, as POV-Ray compares ray-parameter intervals
   const double lipschitz = settings_.max_gradient * speed;  // bound on |dg/dt|
-  // Counted per ray and added to the shared count once, when the trace ends.
+  // Counted per ray and added to the shared counts once, when the trace ends.
   struct Count {
-    std::atomic<std::uint64_t>& total;
-    std::uint64_t n = 0;
-    ~Count() { total.fetch_add(n, std::memory_order_relaxed); }
-  } evaluations{evaluations_};
+    const Isosurface& iso;
+    std::uint64_t n = 0, hits = 0;
+    ~Count() {
+      iso.evaluations_.fetch_add(n, std::memory_order_relaxed);
+      iso.hits_.fetch_add(hits, std::memory_order_relaxed);
+      iso.rays_.fetch_add(1, std::memory_order_relaxed);
+    }
+  } evaluations{*this};
   const auto g = [&](double t) {
     ++evaluations.n;
     return field(ray.at(t));
@@ -96,6 +100,7 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
       g, t, gt, hi, march,
       [&](double root) {
         evaluations.n += 4;  // the normal's samples
+        ++evaluations.hits;
         sink(surface_hit(ray, root));
         more = ++found < limit;
         return more;

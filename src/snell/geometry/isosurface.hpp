@@ -47,6 +47,9 @@ class Isosurface final : public Shape {
   double steepest_slope() const { return steepest_.load(std::memory_order_relaxed); }
   /// How many times f was evaluated so far (march, refinement and normals), for measuring the march.
   std::uint64_t evaluations() const { return evaluations_.load(std::memory_order_relaxed); }
+  /// How many rays were traced and how many surface points (each with a 4-sample normal) found so far.
+  std::uint64_t rays() const { return rays_.load(std::memory_order_relaxed); }
+  std::uint64_t hits() const { return hits_.load(std::memory_order_relaxed); }
   const IsosurfaceSettings& settings() const { return settings_; }
 
  private:
@@ -59,6 +62,8 @@ class Isosurface final : public Shape {
   IsosurfaceSettings settings_;
   mutable std::atomic<double> steepest_{0};
   mutable std::atomic<std::uint64_t> evaluations_{0};
+  mutable std::atomic<std::uint64_t> rays_{0};
+  mutable std::atomic<std::uint64_t> hits_{0};
 };
 
 /// POV-Ray's `evaluate P0, P1, P2` asks for an adaptive max_gradient. snell stays deterministic by

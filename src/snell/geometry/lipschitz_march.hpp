@@ -25,6 +25,7 @@ double refine_root(const G& g, double t0, double g0, double t1, double g1, doubl
     double t = (t0 * g1 - t1 * g0) / (g1 - g0);
     if (!(t > std::min(t0, t1) && t < std::max(t0, t1))) t = 0.5 * (t0 + t1);  // round-off guard
     const double gt = g(t);
+    if (gt == 0) return t;  // an exact root (analytic functions meet them): no bracket left to shrink
     if ((gt < 0) == (g1 < 0)) {
       t1 = t, g1 = gt;
       if (side == -1) g0 *= 0.5;  // the Illinois step: halve the stale end so both ends move

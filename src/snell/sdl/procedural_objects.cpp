@@ -120,7 +120,8 @@ ParsedObject Parser::parse_isosurface(const Token& keyword) {
     // (docs/performance.md).
     if (std::getenv("SNELL_ISOSURFACE_STATS"))
       scene_.render_notes.push_back([where, iso] {
-        return where + ": note: " + std::to_string(iso->evaluations()) + " function evaluations";
+        return where + ": note: " + std::to_string(iso->evaluations()) + " function evaluations on " +
+               std::to_string(iso->rays()) + " rays, " + std::to_string(iso->hits()) + " surface points";
       });
     return iso;
   });
