@@ -45,6 +45,7 @@ TEST(IsosurfaceTest, EvaluationCountFollowsTheLipschitzBound) {
   // safe steps, each possibly after a failed over-relaxed try, plus the entry sample: <= 17 evaluations.
   IsosurfaceSettings s = in_box(unit_sphere_sdf(), 2);
   s.max_gradient = 1;
+  s.count_work = true;
   const Isosurface miss(s);
   LocalHit hit;
   EXPECT_FALSE(miss.intersect({{0, 1.5, -5}, {0, 0, 1}, 0}, 1e-9, math::kInfinity, hit));

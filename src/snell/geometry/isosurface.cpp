@@ -68,6 +68,7 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
     const Isosurface& iso;
     std::uint64_t n = 0, hits = 0;
     ~Count() {
+      if (!iso.settings_.count_work) return;
       iso.evaluations_.fetch_add(n, std::memory_order_relaxed);
       iso.hits_.fetch_add(hits, std::memory_order_relaxed);
       iso.rays_.fetch_add(1, std::memory_order_relaxed);

@@ -24,6 +24,9 @@ struct IsosurfaceSettings {
   bool open = false;
   /// How many surface crossings one ray collects for CSG (`max_trace`; `all_intersections` = unlimited).
   int max_trace = 1;
+  /// Keep the counts evaluations(), rays() and hits() (three shared atomic additions per ray, which two
+  /// threads contend for, so only when asked: SNELL_ISOSURFACE_STATS).
+  bool count_work = false;
 };
 
 /// Ray-casting by Lipschitz sphere tracing (Hart 1996, "Sphere tracing", The Visual Computer 12(10)):
@@ -45,7 +48,8 @@ class Isosurface final : public Shape {
   /// The steepest slope |grad f| seen between samples along rays so far (POV-Ray compares it with
   /// max_gradient after rendering: steeper means holes, much gentler means wasted time).
   double steepest_slope() const { return steepest_.load(std::memory_order_relaxed); }
-  /// How many times f was evaluated so far (march, refinement and normals), for measuring the march.
+  /// How many times f was evaluated so far (march, refinement and normals), for measuring the march;
+  /// 0 unless settings().count_work.
   std::uint64_t evaluations() const { return evaluations_.load(std::memory_order_relaxed); }
   /// How many rays were traced and how many surface points (each with a 4-sample normal) found so far.
   std::uint64_t rays() const { return rays_.load(std::memory_order_relaxed); }
