@@ -39,6 +39,27 @@ TEST(IsosurfaceTest, SphereSdfHeadOnHitsAtFour) {
   EXPECT_NEAR(n.z, -1, 1e-3);
 }
 
+TEST(IsosurfaceTest, EvaluationCountFollowsTheLipschitzBound) {
+  // Exact distance to the unit sphere, L = 1, container box half size 2. A ray passing 0.5 above the
+  // sphere is never nearer than 0.5, so every safe step is >= 0.5 over its 4 units in the box: at most 8
+  // safe steps, each possibly after a failed over-relaxed try, plus the entry sample: <= 17 evaluations.
+  IsosurfaceSettings s = in_box(unit_sphere_sdf(), 2);
+  s.max_gradient = 1;
+  s.count_work = true;
+  const Isosurface miss(s);
+  LocalHit hit;
+  EXPECT_FALSE(miss.intersect({{0, 1.5, -5}, {0, 0, 1}, 0}, 1e-9, math::kInfinity, hit));
+  EXPECT_GE(miss.evaluations(), 5u);
+  EXPECT_LE(miss.evaluations(), 17u);
+  // Head on: the entry sample (g = 1 at z = -2), one over-relaxed step to z = -0.1 (g = -0.9, covered
+  // since 1 + 0.9 >= 1.9), whose regula falsi point is the exact root z = -1 (g = 0, done), then the
+  // normal's four samples: 7.
+  const Isosurface head_on(s);
+  ASSERT_TRUE(head_on.intersect({{0, 0, -5}, {0, 0, 1}, 0}, 1e-9, math::kInfinity, hit));
+  EXPECT_NEAR(hit.t, 4, 1e-12);
+  EXPECT_EQ(head_on.evaluations(), 7u);
+}
+
 TEST(IsosurfaceTest, SphereSdfOffCentreMatchesReferenceVector) {
   IsosurfaceSettings s = in_box(unit_sphere_sdf(), 2);
   s.accuracy = 1e-6;

@@ -1,5 +1,7 @@
 #include "snell/function/function.hpp"
 
+#include "snell/function/register_code.hpp"
+
 #include <array>
 #include <utility>
 
@@ -60,6 +62,7 @@ std::shared_ptr<const Function> Function::compiled(std::vector<std::string> para
   f->arity_ = parameters.size();
   f->parameters_ = std::move(parameters);
   f->program_ = std::move(program);
+  f->code_ = std::make_shared<const RegisterCode>(f->program_, f->arity_);
   return f;
 }
 
@@ -116,7 +119,7 @@ double Function::call(const double* args) const {
     case Kind::compiled:
       break;
   }
-  return run(args);
+  return code_->run(args);
 }
 
 void Function::call_vector(const double* args, double* out) const {
@@ -126,92 +129,14 @@ void Function::call_vector(const double* args, double* out) const {
     out[0] = call(args);
 }
 
-double Function::run(const double* args) const {
-  // Small programs (nearly all) run on a fixed stack; the rare deep one on the heap.
-  // Not zeroed (that cost more than a small program's run): every slot is written before it is read; the
-  // first is set so that an empty program returns 0.
-  std::array<double, 64> fixed;
-  fixed[0] = 0;
-  std::vector<double> heap;
-  double* stack = fixed.data();
-  if (program_.max_stack > fixed.size()) {
-    heap.resize(program_.max_stack);
-    stack = heap.data();
+void Function::call_lanes(const double* const* args, std::size_t lanes, double* out) const {
+  if (kind_ == Kind::compiled) return code_->run_lanes(args, lanes, out);
+  std::array<double, 64> point{};
+  if (arity_ > point.size()) throw FunctionError(name_ + ": too many arguments for a multi-point call");
+  for (std::size_t l = 0; l < lanes; ++l) {
+    for (std::size_t i = 0; i < arity_; ++i) point[i] = args[i][l];
+    out[l] = call(point.data());
   }
-  std::size_t sp = 0;  // next free slot
-  const auto& code = program_.code;
-  for (const Instruction& in : code) {
-    switch (in.op) {
-      case Op::constant:
-        stack[sp++] = in.value;
-        break;
-      case Op::parameter:
-        stack[sp++] = args[in.index];
-        break;
-      case Op::add:
-        --sp, stack[sp - 1] += stack[sp];
-        break;
-      case Op::subtract:
-        --sp, stack[sp - 1] -= stack[sp];
-        break;
-      case Op::multiply:
-        --sp, stack[sp - 1] *= stack[sp];
-        break;
-      case Op::divide:
-        --sp, stack[sp - 1] /= stack[sp];
-        break;
-      case Op::negate:
-        stack[sp - 1] = -stack[sp - 1];
-        break;
-      case Op::logical_not:
-        stack[sp - 1] = stack[sp - 1] == 0 ? 1 : 0;
-        break;
-      case Op::less:
-        --sp, stack[sp - 1] = stack[sp - 1] < stack[sp] ? 1 : 0;
-        break;
-      case Op::less_equal:
-        --sp, stack[sp - 1] = stack[sp - 1] <= stack[sp] ? 1 : 0;
-        break;
-      case Op::equal:
-        --sp, stack[sp - 1] = stack[sp - 1] == stack[sp] ? 1 : 0;
-        break;
-      case Op::not_equal:
-        --sp, stack[sp - 1] = stack[sp - 1] != stack[sp] ? 1 : 0;
-        break;
-      case Op::greater_equal:
-        --sp, stack[sp - 1] = stack[sp - 1] >= stack[sp] ? 1 : 0;
-        break;
-      case Op::greater:
-        --sp, stack[sp - 1] = stack[sp - 1] > stack[sp] ? 1 : 0;
-        break;
-      case Op::logical_and:
-        --sp, stack[sp - 1] = (stack[sp - 1] != 0 && stack[sp] != 0) ? 1 : 0;
-        break;
-      case Op::logical_or:
-        --sp, stack[sp - 1] = (stack[sp - 1] != 0 || stack[sp] != 0) ? 1 : 0;
-        break;
-      case Op::unary:
-        stack[sp - 1] = in.unary(stack[sp - 1]);
-        break;
-      case Op::binary:
-        --sp, stack[sp - 1] = in.binary(stack[sp - 1], stack[sp]);
-        break;
-      case Op::call: {
-        sp -= in.count;
-        stack[sp] = program_.callees[in.index]->call(stack + sp);
-        ++sp;
-        break;
-      }
-      case Op::call_component: {
-        std::array<double, kMaxComponents> out{};
-        sp -= in.count;
-        program_.callees[in.index]->call_vector(stack + sp, out.data());
-        stack[sp++] = out[static_cast<std::size_t>(in.value)];
-        break;
-      }
-    }
-  }
-  return stack[0];
 }
 
 }  // namespace snell::function

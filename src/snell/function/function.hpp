@@ -20,6 +20,7 @@ class FunctionError : public std::runtime_error {
 };
 
 class Function;
+class RegisterCode;
 
 enum class Op : std::uint8_t {
   constant,   // push value
@@ -42,6 +43,7 @@ enum class Op : std::uint8_t {
   binary,          // b = pop, a = pop, push binary(a, b)
   call,            // pop `count` arguments, push callees[index](arguments)
   call_component,  // like call, for a vector-valued callee: push component `value` of its result
+  native,          // register code only (register_code.hpp): a native callee called directly
 };
 
 struct Instruction {
@@ -79,6 +81,7 @@ class ProgramBuilder {
  private:
   void push(int change);
   Program program_;
+  std::shared_ptr<const RegisterCode> code_;  // what a compiled function runs (register_code.hpp)
   std::uint32_t depth_ = 0;
 };
 
@@ -112,16 +115,25 @@ class Function {
   double call(const double* args) const;
   /// All components() values of a call (a float function fills one).
   void call_vector(const double* args, double* out) const;
+  /// call() at `lanes` points at once (at most kMaxLanes): parameter i of point l is args[i][l], the
+  /// value goes to out[l]. A compiled function runs its code once for all points (SIMD lanes).
+  void call_lanes(const double* const* args, std::size_t lanes, double* out) const;
+  static constexpr std::size_t kMaxLanes = 8;
+
+  /// A compiled function's stack program (what the register code was made from); else null.
+  const Program* stack_program() const { return kind_ == Kind::compiled ? &program_ : nullptr; }
+  /// A native function's entry point; else null.
+  Native native_function() const { return kind_ == Kind::native ? native_ : nullptr; }
 
  private:
   enum class Kind { compiled, native, vector, unsupported };
-  double run(const double* args) const;
 
   Kind kind_ = Kind::compiled;
   std::string name_;
   std::size_t arity_ = 0;
   std::vector<std::string> parameters_;
   Program program_;
+  std::shared_ptr<const RegisterCode> code_;  // what a compiled function runs (register_code.hpp)
   Native native_ = nullptr;
   VectorNative vector_;
   std::size_t components_ = 1;

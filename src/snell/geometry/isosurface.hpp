@@ -2,6 +2,7 @@
 // POV-Ray `isosurface` (POV-Ray 3.7 reference, "Isosurface Object"): the surface where a user function
 // equals `threshold`, inside where it is below, cut out of a box or sphere container.
 #include <atomic>
+#include <cstdint>
 #include <memory>
 
 #include "snell/function/function.hpp"
@@ -23,6 +24,9 @@ struct IsosurfaceSettings {
   bool open = false;
   /// How many surface crossings one ray collects for CSG (`max_trace`; `all_intersections` = unlimited).
   int max_trace = 1;
+  /// Keep the counts evaluations(), rays() and hits() (three shared atomic additions per ray, which two
+  /// threads contend for, so only when asked: SNELL_ISOSURFACE_STATS).
+  bool count_work = false;
 };
 
 /// Ray-casting by Lipschitz sphere tracing (Hart 1996, "Sphere tracing", The Visual Computer 12(10)):
@@ -44,6 +48,12 @@ class Isosurface final : public Shape {
   /// The steepest slope |grad f| seen between samples along rays so far (POV-Ray compares it with
   /// max_gradient after rendering: steeper means holes, much gentler means wasted time).
   double steepest_slope() const { return steepest_.load(std::memory_order_relaxed); }
+  /// How many times f was evaluated so far (march, refinement and normals), for measuring the march;
+  /// 0 unless settings().count_work.
+  std::uint64_t evaluations() const { return evaluations_.load(std::memory_order_relaxed); }
+  /// How many rays were traced and how many surface points (each with a 4-sample normal) found so far.
+  std::uint64_t rays() const { return rays_.load(std::memory_order_relaxed); }
+  std::uint64_t hits() const { return hits_.load(std::memory_order_relaxed); }
   const IsosurfaceSettings& settings() const { return settings_; }
 
  private:
@@ -55,6 +65,9 @@ class Isosurface final : public Shape {
 
   IsosurfaceSettings settings_;
   mutable std::atomic<double> steepest_{0};
+  mutable std::atomic<std::uint64_t> evaluations_{0};
+  mutable std::atomic<std::uint64_t> rays_{0};
+  mutable std::atomic<std::uint64_t> hits_{0};
 };
 
 /// POV-Ray's `evaluate P0, P1, P2` asks for an adaptive max_gradient. snell stays deterministic by

@@ -25,6 +25,7 @@ double refine_root(const G& g, double t0, double g0, double t1, double g1, doubl
     double t = (t0 * g1 - t1 * g0) / (g1 - g0);
     if (!(t > std::min(t0, t1) && t < std::max(t0, t1))) t = 0.5 * (t0 + t1);  // round-off guard
     const double gt = g(t);
+    if (gt == 0) return t;  // an exact root (analytic functions meet them): no bracket left to shrink
     if ((gt < 0) == (g1 < 0)) {
       t1 = t, g1 = gt;
       if (side == -1) g0 *= 0.5;  // the Illinois step: halve the stale end so both ends move
@@ -57,17 +58,19 @@ double march_roots(const G& g, double t, double gt, double hi, const MarchSettin
   const auto covered = [&](double t0, double g0, double t1, double g1) {
     return std::fabs(g0) + std::fabs(g1) >= s.lipschitz * (t1 - t0);
   };
+  const double inverse_lipschitz = 1 / s.lipschitz;  // divisions cost more than the march's other work
   while (t < hi) {
-    const double safe = std::max(std::fabs(gt) / s.lipschitz, s.min_step);
+    const double reach = std::fabs(gt) * inverse_lipschitz;  // no root closer than this
+    const double safe = std::max(reach, s.min_step);
     double t1, g1;
     if (ahead && covered(t, gt, ahead_t, ahead_g)) {
       t1 = ahead_t, g1 = ahead_g;
       ahead = false;
     } else {
       // At the minimum step the march is past proving anything: no over-relaxation there.
-      const bool relax = !ahead && std::fabs(gt) / s.lipschitz > s.min_step;
+      const bool relax = !ahead && reach > s.min_step;
       const double omega =
-          relax ? std::clamp(1.9 / (1 + std::max(approach, 0.0) / s.lipschitz), 1.0, 1.9) : 1;
+          relax ? std::clamp(1.9 / (1 + std::max(approach, 0.0) * inverse_lipschitz), 1.0, 1.9) : 1;
       t1 = std::min(hi, t + omega * safe);
       if (ahead && t1 >= ahead_t) {
         t1 = ahead_t, g1 = ahead_g;  // the safe step reaches the kept point: no evaluation needed

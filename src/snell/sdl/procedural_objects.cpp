@@ -3,8 +3,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "snell/geometry/bicubic_patch.hpp"
 #include "snell/geometry/box.hpp"
@@ -54,6 +56,7 @@ ParsedObject Parser::parse_isosurface(const Token& keyword) {
   o.where = keyword.where;
   expect("{", "isosurface");
   geometry::IsosurfaceSettings s;
+  s.count_work = std::getenv("SNELL_ISOSURFACE_STATS") != nullptr;  // reported after rendering, below
   s.container =
       std::make_shared<geometry::Box>(math::Vec3(-1), math::Vec3(1));  // POV-Ray's default container
   std::optional<std::array<double, 3>> evaluate;
@@ -114,6 +117,13 @@ ParsedObject Parser::parse_isosurface(const Token& keyword) {
     const std::string where = keyword.where.to_string();
     // With `evaluate` the gradient was measured, so there is nothing to advise (as in POV-Ray).
     if (!evaluate) scene_.render_notes.push_back([where, iso] { return gradient_warning(where, *iso); });
+    // SNELL_ISOSURFACE_STATS=1 reports how often each isosurface evaluated its function
+    // (docs/performance.md).
+    if (iso->settings().count_work)
+      scene_.render_notes.push_back([where, iso] {
+        return where + ": note: " + std::to_string(iso->evaluations()) + " function evaluations on " +
+               std::to_string(iso->rays()) + " rays, " + std::to_string(iso->hits()) + " surface points";
+      });
     return iso;
   });
 }

@@ -1,0 +1,66 @@
+#pragma once
+// The form in which a compiled function is evaluated. The parser's stack program (function.hpp) is
+// translated once into single-assignment register code: every instruction writes its own register and
+// names its operands directly, so constants and parameters cost no instructions, calls of other compiled
+// functions are inlined, operations on constants are folded, and a value computed twice (`cos(y)` in a
+// twisted box) is computed once (common subexpressions, found by hash-consing). Each instruction performs
+// exactly the operation the stack program would, in the same order, so the values are bit-identical.
+//
+// run_lanes() evaluates the code at up to kMaxLanes points at once: one dispatch per instruction for all
+// points, and the arithmetic on the lanes is a loop the compiler vectorises (SIMD multi-point evaluation,
+// used for an isosurface's normal samples).
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "snell/function/function.hpp"
+
+namespace snell::function {
+
+/// One operation of register code. Its `op` is a stack-program operator other than constant and
+/// parameter (those become registers); the calls (call, call_component, native) come last in Op, and
+/// take their arguments from a list: registers arguments[a .. a + b).
+struct RegisterInstruction {
+  Op op = Op::add;
+  std::uint32_t a = 0;  // first operand's register (calls: first index into the argument list)
+  std::uint32_t b = 0;  // second operand's register (calls: argument count)
+  double (*unary)(double) = nullptr;
+  double (*binary)(double, double) = nullptr;
+  Function::Native native = nullptr;
+  const Function* callee = nullptr;
+  std::uint32_t component = 0;
+};
+
+class RegisterCode {
+ public:
+  static constexpr std::size_t kMaxLanes = Function::kMaxLanes;
+
+  /// Translates `program` of a function with `arity` parameters. Throws FunctionError on a malformed
+  /// program (one that does not leave exactly one value).
+  RegisterCode(const Program& program, std::size_t arity);
+
+  /// The value at one point; `args` holds arity() values.
+  double run(const double* args) const;
+  /// Values at `lanes` (1..kMaxLanes) points: parameter i of point l is args[i][l]; results go to out[l].
+  void run_lanes(const double* const* args, std::size_t lanes, double* out) const;
+
+  std::size_t instruction_count() const { return code_.size(); }
+  std::size_t constant_count() const { return constants_.size(); }
+
+ private:
+  friend class RegisterCodeBuilder;
+  RegisterCode() = default;
+  double run_in(double* registers, const double* args) const;
+
+  // Registers: [0, constants) hold constants_, then the parameters, then one per instruction.
+  std::vector<double> constants_;
+  std::vector<double> lane_constants_;  // each constant repeated kMaxLanes times, for run_lanes
+  std::size_t arity_ = 0;
+  std::vector<RegisterInstruction> code_;
+  std::vector<std::uint32_t> arguments_;  // argument registers of native calls and calls
+  std::uint32_t result_ = 0;
+  std::vector<std::shared_ptr<const Function>> callees_;  // keeps call targets alive
+};
+
+}  // namespace snell::function

@@ -1,0 +1,114 @@
+// The register form of compiled functions: the same values as the stack program describes, with
+// constants folded, shared subexpressions computed once, compiled callees inlined, and several points
+// evaluated at once.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "snell/function/function.hpp"
+#include "snell/function/internals.hpp"
+#include "snell/function/register_code.hpp"
+
+namespace snell::function {
+namespace {
+
+double cosine(double a) {
+  return std::cos(a);
+}
+
+/// x * cos(y) + z * cos(y): two cosines of the same operand.
+Program twisted() {
+  ProgramBuilder b;
+  b.parameter(0);
+  b.parameter(1);
+  b.unary(cosine);
+  b.op(Op::multiply);
+  b.parameter(2);
+  b.parameter(1);
+  b.unary(cosine);
+  b.op(Op::multiply);
+  b.op(Op::add);
+  return b.finish();
+}
+
+TEST(RegisterCode, SharedSubexpressionsAreComputedOnce) {
+  const RegisterCode code(twisted(), 3);
+  // cos(y), x * cos(y), z * cos(y), their sum: the second cos(y) is the first one's register.
+  EXPECT_EQ(code.instruction_count(), 4u);
+  const double args[3] = {2, 0.5, 3};
+  EXPECT_DOUBLE_EQ(code.run(args), 5 * std::cos(0.5));
+}
+
+TEST(RegisterCode, OperationsOnConstantsAreFolded) {
+  ProgramBuilder b;  // (x + 2 * 3) - cos(0)
+  b.parameter(0);
+  b.constant(2);
+  b.constant(3);
+  b.op(Op::multiply);
+  b.op(Op::add);
+  b.constant(0);
+  b.unary(cosine);
+  b.op(Op::subtract);
+  const RegisterCode code(b.finish(), 1);
+  EXPECT_EQ(code.instruction_count(), 2u);  // (x + 6) - 1: the operations on x itself stay
+  EXPECT_EQ(code.constant_count(), 2u);     // 6 and cos(0) = 1; 2, 3 and 0 are gone
+  const double x = 10;
+  EXPECT_DOUBLE_EQ(code.run(&x), 15);
+}
+
+TEST(RegisterCode, CompiledCalleesAreInlinedAndNativesCalledDirectly) {
+  // inner(a, b) = f_sphere(a, b, 0, 1) * 2; outer(x, y) = inner(y, x) - inner(x, 0).
+  ProgramBuilder ib;
+  ib.parameter(0);
+  ib.parameter(1);
+  ib.constant(0);
+  ib.constant(1);
+  ib.call(internal_function(61), 4);
+  ib.constant(2);
+  ib.op(Op::multiply);
+  const auto inner = Function::compiled({"a", "b"}, ib.finish());
+  ProgramBuilder ob;
+  ob.parameter(1);
+  ob.parameter(0);
+  ob.call(inner, 2);
+  ob.parameter(0);
+  ob.constant(0);
+  ob.call(inner, 2);
+  ob.op(Op::subtract);
+  ASSERT_NE(inner->stack_program(), nullptr);
+  const RegisterCode code(ob.finish(), 2);
+  // Two sphere calls, two doublings, one subtraction; no call of `inner` is left.
+  EXPECT_EQ(code.instruction_count(), 5u);
+  const double args[2] = {3, 4};
+  EXPECT_DOUBLE_EQ(code.run(args), 4);  // 2 (|(4, 3, 0)| - 1) - 2 (|(3, 0, 0)| - 1) = 8 - 4
+  const double other[2] = {0, 2};       // 2 (|(2, 0, 0)| - 1) - 2 (|(0, 0, 0)| - 1) = 2 + 2
+  EXPECT_DOUBLE_EQ(code.run(other), 4);
+}
+
+TEST(RegisterCode, LanesGiveEachPointsValueBitForBit) {
+  const auto f = Function::compiled({"x", "y", "z"}, twisted());
+  std::vector<double> xs, ys, zs;
+  for (int l = 0; l < 8; ++l) {
+    xs.push_back(0.3 * l - 1), ys.push_back(0.7 * l), zs.push_back(2 - 0.1 * l * l);
+  }
+  const double* const args[3] = {xs.data(), ys.data(), zs.data()};
+  for (std::size_t lanes : {1u, 4u, 8u}) {
+    double out[8];
+    f->call_lanes(args, lanes, out);
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const double point[3] = {xs[l], ys[l], zs[l]};
+      EXPECT_EQ(out[l], f->call(point)) << "lane " << l;
+      EXPECT_DOUBLE_EQ(out[l], (xs[l] + zs[l]) * std::cos(ys[l]));
+    }
+  }
+  // A native function goes lane by lane through the same entry point.
+  const auto noise = internal_function(76);
+  double out[2];
+  noise->call_lanes(args, 2, out);
+  const double p1[3] = {xs[1], ys[1], zs[1]};
+  EXPECT_EQ(out[1], noise->call(p1));
+}
+
+}  // namespace
+}  // namespace snell::function
