@@ -47,8 +47,10 @@ struct Texture {
   static std::shared_ptr<const Texture> layered(const std::shared_ptr<const Texture>& top,
                                                 std::shared_ptr<const Texture> bottom);
   /// The pigment of the whole stack at a world point: each layer's colour over the ones below by its
-  /// filter and transmit.
-  Rgbft pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal, const math::Vec2& uv) const;
+  /// filter and transmit. `ray_direction` (unit) is the ray that met the point, for patterns that
+  /// depend on it (`aoi`); zero where there is none.
+  Rgbft pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal, const math::Vec2& uv,
+                   const math::Vec3& ray_direction = {}) const;
 
   /// The shading normal at a world point: `world_normal` (unit) bent by the first layer that has a
   /// `normal {}`, in that layer's texture space; `world_normal` itself when none has.
@@ -58,8 +60,8 @@ struct Texture {
   /// This layer alone, without the layers below: its pigment, and `world_normal` bent by its own
   /// `normal {}` (unchanged without one). POV-Ray lights each layer with its own finish and normal
   /// (trace.cpp, ComputeLightedTexture), which render/layered_shading.cpp follows.
-  Rgbft own_pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
-                       const math::Vec2& uv) const;
+  Rgbft own_pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal, const math::Vec2& uv,
+                       const math::Vec3& ray_direction = {}) const;
   math::Vec3 own_shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
                                 const math::Vec2& uv) const;
 

@@ -23,7 +23,7 @@ math::Color WhittedIntegrator::lower_layers(const ShadingPoint& top, const math:
     ShadingPoint sp = top;
     sp.finish = &layer->finish_at(hit.texture_point);
     sp.normal = layer->own_shading_normal(hit.texture_point, shape_normal, hit.uv);
-    sp.pigment = layer->own_pigment_at(hit.texture_point, hit.normal, hit.uv);
+    sp.pigment = layer->own_pigment_at(hit.texture_point, hit.normal, hit.uv, top.ray->direction);
     sp.opacity = opacity_of(sp.pigment, scene_.settings.language_version);
     const double layer_weight = weight * trans;
     double reflect_weight = layer_weight;

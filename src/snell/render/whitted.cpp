@@ -206,7 +206,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   // The top layer's own normal and pigment; layers below are lit on their own (layered_shading.cpp).
   const material::Texture& texture = *hit.object->texture;
   sp.normal = texture.own_shading_normal(hit.texture_point, shape_normal, hit.uv);
-  sp.pigment = texture.own_pigment_at(hit.texture_point, hit.normal, hit.uv);
+  sp.pigment = texture.own_pigment_at(hit.texture_point, hit.normal, hit.uv, ray.direction);
   sp.observer = context.observer;
   sp.highlights = context.radiosity_depth == 0;
   const material::Rgbft& pc = sp.pigment;

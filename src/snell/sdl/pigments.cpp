@@ -6,6 +6,7 @@
 
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
+#include "snell/texture/aoi_pattern.hpp"
 #include "snell/texture/cellular_patterns.hpp"
 #include "snell/texture/function_pattern.hpp"
 #include "snell/texture/image_pattern.hpp"
@@ -34,7 +35,7 @@ PigmentPtr solid(const material::Rgbft& c) {
 
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
-  static const char* const patterns[] = {"pavement", "tiling", "aoi"};
+  static const char* const patterns[] = {"pavement", "tiling"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -152,6 +153,8 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     value = std::make_shared<texture::ImagePattern>(image);
   } else if (w == "cells") {
     value = std::make_shared<texture::CellsPattern>();
+  } else if (w == "aoi") {
+    value = std::make_shared<texture::AoiPattern>();
   } else if (w == "function") {
     raw_next();
     value = parse_function_pattern(t);
