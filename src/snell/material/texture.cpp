@@ -16,9 +16,14 @@ std::shared_ptr<const Texture> Texture::default_texture() {
 
 std::shared_ptr<const Texture> Texture::transformed(const math::Transform& t) const {
   auto copy = std::make_shared<Texture>(*this);
-  copy->transform = t * copy->transform;
-  if (below) copy->below = below->transformed(t);
+  copy->move(t);
   return copy;
+}
+
+void Texture::move(const math::Transform& t) {
+  transform = t * transform;
+  if (below) below = below->transformed(t);
+  for (auto& entry : averaged) entry.second = entry.second->transformed(t);
 }
 
 std::shared_ptr<const Texture> Texture::layered(const std::shared_ptr<const Texture>& top,

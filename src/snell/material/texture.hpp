@@ -1,5 +1,7 @@
 #pragma once
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "snell/material/finish.hpp"
 #include "snell/material/normal.hpp"
@@ -40,9 +42,15 @@ struct Texture {
   /// The layer under this one (POV-Ray 3.7 reference, "Layered Textures": `texture {A} texture {B}` puts
   /// B on top of A; where B's pigment is transparent, A shows through). Null for a single texture.
   std::shared_ptr<const Texture> below;
+  /// `average texture_map {..}` (POV-Ray trace.cpp, ComputeAverageTextureColours): the entries with their
+  /// weights, already placed in world space. The renderer lights each entry on its own and averages the
+  /// results; pigment, normal and finish above hold one blended stand-in for shadows and other uses.
+  std::vector<std::pair<double, std::shared_ptr<const Texture>>> averaged;
 
   /// This texture with `t` applied after its transforms, on every layer.
   std::shared_ptr<const Texture> transformed(const math::Transform& t) const;
+  /// Applies `t` after this texture's transforms in place: its own, its layers' and its averaged entries'.
+  void move(const math::Transform& t);
   /// `top` placed over `bottom` (each may already be layered): a copy of top's chain ending on bottom.
   static std::shared_ptr<const Texture> layered(const std::shared_ptr<const Texture>& top,
                                                 std::shared_ptr<const Texture> bottom);

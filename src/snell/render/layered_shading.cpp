@@ -17,7 +17,7 @@ math::Color WhittedIntegrator::lower_layers(const ShadingPoint& top, const math:
                                             math::Color& filter) const {
   const scene::SurfaceHit& hit = *top.hit;
   math::Color result(0);
-  for (const material::Texture* layer = hit.object->texture->below.get(); layer; layer = layer->below.get()) {
+  for (const material::Texture* layer = top.texture->below.get(); layer; layer = layer->below.get()) {
     const double trans = std::min(1.0, std::fabs(filter.grey()));
     if (trans <= scene_.settings.adc_bailout) break;
     ShadingPoint sp = top;
