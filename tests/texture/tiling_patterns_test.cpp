@@ -23,38 +23,36 @@ double srgb_to_linear(int v) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-void expect_povray(int tiling, const Sample (&samples)[5]) {
-  const TilingPattern pattern(tiling);
-  for (const Sample& s : samples) {
-    const double v = pattern.value({s.x, 7.0, s.z});  // constant along y
-    // Half an 8-bit step in sRGB, taken back to linear.
-    const double tolerance = srgb_to_linear(s.srgb + 1) - srgb_to_linear(s.srgb);
-    EXPECT_NEAR(v, srgb_to_linear(s.srgb), tolerance) << "tiling " << tiling << " at " << s.x << ", " << s.z;
+// POV-Ray's pixels, per tiling 1, 2, 3.
+constexpr Sample kPovray[3][5] = {
+    {{2.784375, 2.496875, 199},
+     {1.378125, 0.059375, 241},
+     {-0.590625, 2.028125, 249},
+     {-1.434375, -1.534375, 101},
+     {2.034375, -2.284375, 247}},
+    {{2.784375, 2.496875, 228},
+     {1.378125, 0.059375, 212},
+     {-0.590625, 2.028125, 200},
+     {-1.434375, -1.534375, 195},
+     {2.034375, -2.284375, 209}},
+    {{2.784375, 2.496875, 234},
+     {1.378125, 0.059375, 169},
+     {-0.590625, 2.028125, 105},
+     {-1.434375, -1.534375, 111},
+     {2.034375, -2.284375, 76}},
+};
+
+TEST(TilingPattern, SquaresHexagonsAndTrianglesMatchPovray) {
+  for (int tiling = 1; tiling <= 3; ++tiling) {
+    const TilingPattern pattern(tiling);
+    for (const Sample& s : kPovray[tiling - 1]) {
+      const double v = pattern.value({s.x, 7.0, s.z});  // constant along y
+      // Half an 8-bit step in sRGB, taken back to linear.
+      const double tolerance = srgb_to_linear(s.srgb + 1) - srgb_to_linear(s.srgb);
+      EXPECT_NEAR(v, srgb_to_linear(s.srgb), tolerance)
+          << "tiling " << tiling << " at " << s.x << ", " << s.z;
+    }
   }
-}
-
-TEST(TilingPattern, SquaresMatchPovray) {
-  expect_povray(1, {{2.784375, 2.496875, 199},
-                    {1.378125, 0.059375, 241},
-                    {-0.590625, 2.028125, 249},
-                    {-1.434375, -1.534375, 101},
-                    {2.034375, -2.284375, 247}});
-}
-
-TEST(TilingPattern, HexagonsMatchPovray) {
-  expect_povray(2, {{2.784375, 2.496875, 228},
-                    {1.378125, 0.059375, 212},
-                    {-0.590625, 2.028125, 200},
-                    {-1.434375, -1.534375, 195},
-                    {2.034375, -2.284375, 209}});
-}
-
-TEST(TilingPattern, TrianglesMatchPovray) {
-  expect_povray(3, {{2.784375, 2.496875, 234},
-                    {1.378125, 0.059375, 169},
-                    {-0.590625, 2.028125, 105},
-                    {-1.434375, -1.534375, 111},
-                    {2.034375, -2.284375, 76}});
 }
 
 TEST(TilingPattern, RampRunsFromTileCentreToOutline) {
