@@ -1,4 +1,4 @@
-// `tiling 1..3` against POV-Ray 3.7: a plane with `pigment { tiling N color_map { [0 rgb 0] [1 rgb 1] } }`,
+// `tiling 1..5` against POV-Ray 3.7: a plane with `pigment { tiling N color_map { [0 rgb 0] [1 rgb 1] } }`,
 // `finish { ambient 1 diffuse 0 }`, assumed_gamma 1, seen by an orthographic camera 6 units wide centred
 // on <0.3, 0, 0.2> at 64x64 (-A; +x runs leftwards in that image, +z upwards). snell's render of the same
 // scene is pixel-identical (imgdiff SSIM 1.0000, PSNR inf, for each of the three). The points below are five
@@ -23,8 +23,8 @@ double srgb_to_linear(int v) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-// POV-Ray's pixels, per tiling 1, 2, 3.
-constexpr Sample kPovray[3][5] = {
+// POV-Ray's pixels, per tiling 1 to 5.
+constexpr Sample kPovray[5][5] = {
     {{2.784375, 2.496875, 199},
      {1.378125, 0.059375, 241},
      {-0.590625, 2.028125, 249},
@@ -40,10 +40,20 @@ constexpr Sample kPovray[3][5] = {
      {-0.590625, 2.028125, 105},
      {-1.434375, -1.534375, 111},
      {2.034375, -2.284375, 76}},
+    {{2.784375, 2.496875, 227},
+     {1.378125, 0.059375, 239},
+     {-0.590625, 2.028125, 191},
+     {-1.434375, -1.534375, 195},
+     {2.034375, -2.284375, 147}},
+    {{2.784375, 2.496875, 190},
+     {1.378125, 0.059375, 177},
+     {-0.590625, 2.028125, 228},
+     {-1.434375, -1.534375, 179},
+     {2.034375, -2.284375, 88}},
 };
 
-TEST(TilingPattern, SquaresHexagonsAndTrianglesMatchPovray) {
-  for (int tiling = 1; tiling <= 3; ++tiling) {
+TEST(TilingPattern, TilingsOneToFiveMatchPovray) {
+  for (int tiling = 1; tiling <= 5; ++tiling) {
     const TilingPattern pattern(tiling);
     for (const Sample& s : kPovray[tiling - 1]) {
       const double v = pattern.value({s.x, 7.0, s.z});  // constant along y
@@ -74,7 +84,7 @@ TEST(TilingPattern, RampRunsFromTileCentreToOutline) {
 }
 
 TEST(TilingPattern, RefusesTheTilingsSnellLacks) {
-  EXPECT_THROW(TilingPattern(4), std::invalid_argument);
+  EXPECT_THROW(TilingPattern(6), std::invalid_argument);
   EXPECT_THROW(TilingPattern(0), std::invalid_argument);
 }
 

@@ -161,7 +161,7 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     const Token number = peek();
     const int n = static_cast<int>(parse_float());
     if (!texture::TilingPattern::supported(n))
-      fail(number.where, "tiling " + std::to_string(n) + " is not supported yet (snell has tilings 1 to 3)");
+      fail(number.where, "tiling " + std::to_string(n) + " is not supported yet (snell has tilings 1 to 5)");
     value = std::make_shared<texture::TilingPattern>(n);
   } else if (w == "function") {
     raw_next();
