@@ -1,11 +1,11 @@
 // snell texture gallery: every pattern on a labelled grid of tiles, pigments and patterned textures in the
 // top rows, normals (on a plain white tile) in the bottom rows. Each label is a `text {}` under its tile.
-// Render: snell render scenes/textures.pov -o textures.png -w 720 -h 658 --aa 0.3
+// Render: snell render scenes/textures.pov -o textures.png -w 660 -h 678 --aa 0.3
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
 #declare Columns = 9;
-#declare Rows = 8;
+#declare Rows = 9;
 #declare RowHeight = 1.2;
 camera {
   orthographic
@@ -139,3 +139,25 @@ sphere { Centre, 0.42 texture { pigment { rgb <0.9, 0.88, 0.85> } normal { facet
   finish { ambient 0.1 diffuse 0.8 specular 0.4 roughness 0.02 } } Place(7, 7) }
 Label(7, 7, "facets")
 BumpTile(8, 7, "bump_map", normal { bump_map { png "povmap.png" bump_size 3 } scale 0.88 translate <0.06, -0.94, 0> })
+// Row 9: the angle of incidence, tilings 1-5 and an average of textures with different finishes.
+// aoi: 1 where the (orthographic) rays meet the sphere head-on, 0.5 at its rim.
+sphere { Centre, 0.42 texture { pigment { aoi color_map { [0.5 rgb <0.1, 0.1, 0.15>] [1 rgb <0.95, 0.9, 0.8>] } }
+  finish { ambient 0.6 diffuse 0.4 } } Place(0, 8) }
+Label(0, 8, "aoi")
+// Tilings lie in the x-z plane: turned to face the camera. Light caulk on each tile's outline.
+#declare Caulked = color_map { [0 rgb <0.15, 0.2, 0.45>] [0.8 rgb <0.5, 0.6, 0.9>] [0.9 rgb 0.95] [1 rgb 0.95] }
+#declare Caulked2 = color_map { [0 rgb <0.15, 0.2, 0.45>] [0.4 rgb <0.5, 0.6, 0.9>] [0.45 rgb 0.95]
+  [0.5 rgb 0.95] [0.5 rgb <0.45, 0.15, 0.1>] [0.9 rgb <0.9, 0.5, 0.4>] [0.95 rgb 0.95] [1 rgb 0.95] }
+Tile(1, 8, "tiling 1", pigment { tiling 1 color_map { Caulked } rotate x*90 scale 0.22 })
+Tile(2, 8, "tiling 2", pigment { tiling 2 color_map { Caulked } rotate x*90 scale 0.15 })
+Tile(3, 8, "tiling 3", pigment { tiling 3 color_map { Caulked2 } rotate x*90 scale 0.25 })
+Tile(4, 8, "tiling 4", pigment { tiling 4 color_map { Caulked } rotate x*90 scale 0.25 })
+#declare Caulked3 = color_map { [0 rgb <0.15, 0.2, 0.45>] [0.3 rgb <0.5, 0.6, 0.9>] [0.333 rgb 0.95]
+  [0.333 rgb <0.45, 0.15, 0.1>] [0.633 rgb <0.9, 0.5, 0.4>] [0.666 rgb 0.95]
+  [0.666 rgb <0.1, 0.35, 0.15>] [0.966 rgb <0.5, 0.85, 0.5>] [1 rgb 0.95] }
+Tile(5, 8, "tiling 5", pigment { tiling 5 color_map { Caulked3 } rotate x*90 scale 0.2 })
+// Each entry lit with its own finish, then averaged: a matte gradient and a shiny, bumpy red.
+TextureTile(6, 8, "avg finishes", texture { average texture_map {
+  [1 pigment { gradient x color_map { Grey } scale 0.3 } finish { ambient 0.15 diffuse 0.8 }]
+  [1 pigment { rgb <0.8, 0.1, 0.05> } normal { bumps 0.5 scale 0.08 }
+     finish { ambient 0.05 diffuse 0.4 phong 1 phong_size 60 }] } })

@@ -130,7 +130,7 @@ TEST(SdlAtmosphere, UnsupportedDensityPatternDropsTheMediaWithAWarning) {
   std::vector<std::string> messages;
   const auto s = test::parse(
       "media { emission 1 density { pavement } }\n"
-      "sphere { 0, 1 hollow interior { media { emission 1 density { tiling 3 } } } }",
+      "sphere { 0, 1 hollow interior { media { emission 1 density { tiling 6 } } } }",
       &messages);
   EXPECT_TRUE(s.atmosphere.empty());
   ASSERT_EQ(s.objects.size(), 1u);

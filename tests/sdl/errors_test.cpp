@@ -33,7 +33,7 @@ TEST(SdlErrors, CommonMistakes) {
   has("sphere { 0, \"unterminated }", "unterminated string");
   has("/* never closed", "unterminated comment");
   has("sphere { 0, 1 pigment { facets } }", "the facets pattern can only be used in a normal");
-  has("sphere { 0, 1 pigment { tiling 3 } }", "pattern 'tiling' is not supported yet");
+  has("sphere { 0, 1 pigment { tiling 6 } }", "tiling 6 is not supported yet");
   has("sphere { 0, sqrt(-1) }", "sqrt: negative argument");
   has("#macro M(A, B) sphere { A, B } #end M(1)", "macro M takes 2 parameter(s), called with 1");
   // An all-zero column only warns and becomes 1 (POV-Ray's Parse_Matrix); two equal columns stay singular.

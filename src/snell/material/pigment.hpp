@@ -10,6 +10,8 @@ struct PatternPoint {
   math::Vec3 p;
   math::Vec3 world_normal;
   math::Vec2 uv;
+  /// Unit direction of the ray that met the surface (the `aoi` pattern); zero where no ray is known.
+  math::Vec3 ray_direction{};
 };
 
 /// The colour of a surface at a point: solid colours now, patterns with maps later (texture/).

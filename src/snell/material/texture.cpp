@@ -16,9 +16,14 @@ std::shared_ptr<const Texture> Texture::default_texture() {
 
 std::shared_ptr<const Texture> Texture::transformed(const math::Transform& t) const {
   auto copy = std::make_shared<Texture>(*this);
-  copy->transform = t * copy->transform;
-  if (below) copy->below = below->transformed(t);
+  copy->move(t);
   return copy;
+}
+
+void Texture::move(const math::Transform& t) {
+  transform = t * transform;
+  if (below) below = below->transformed(t);
+  for (auto& entry : averaged) entry.second = entry.second->transformed(t);
 }
 
 std::shared_ptr<const Texture> Texture::layered(const std::shared_ptr<const Texture>& top,
@@ -33,27 +38,28 @@ namespace {
 
 /// The hit as a layer's patterns see it: the point in the layer's texture space.
 PatternPoint layer_point(const Texture& layer, const math::Vec3& world_point, const math::Vec3& world_normal,
-                         const math::Vec2& uv) {
+                         const math::Vec2& uv, const math::Vec3& ray_direction = {}) {
   PatternPoint pp;
   pp.p = layer.transform.inverse_point(world_point);
   pp.world_normal = world_normal;
   pp.uv = uv;
+  pp.ray_direction = ray_direction;
   return pp;
 }
 
 Rgbft layer_pigment(const Texture& layer, const math::Vec3& world_point, const math::Vec3& world_normal,
-                    const math::Vec2& uv) {
+                    const math::Vec2& uv, const math::Vec3& ray_direction) {
   if (layer.selector) {
     // The entries see the point in the mapped texture's space as their "world".
-    const PatternPoint pp = layer_point(layer, world_point, world_normal, uv);
+    const PatternPoint pp = layer_point(layer, world_point, world_normal, uv, ray_direction);
     const TextureSelector::Choice c = layer.selector->at(pp);
-    const Rgbft first = c.first->pigment_at(pp.p, world_normal, uv);
+    const Rgbft first = c.first->pigment_at(pp.p, world_normal, uv, ray_direction);
     if (!c.second) return first;
-    return lerp(first, c.second->pigment_at(pp.p, world_normal, uv), c.weight);
+    return lerp(first, c.second->pigment_at(pp.p, world_normal, uv, ray_direction), c.weight);
   }
   if (!layer.pigment) return {};
   if (layer.pigment->is_constant()) return layer.pigment->at({});
-  return layer.pigment->at(layer_point(layer, world_point, world_normal, uv));
+  return layer.pigment->at(layer_point(layer, world_point, world_normal, uv, ray_direction));
 }
 
 }  // namespace
@@ -66,8 +72,8 @@ math::Vec3 Texture::shading_normal(const math::Vec3& world_point, const math::Ve
 }
 
 Rgbft Texture::own_pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
-                              const math::Vec2& uv) const {
-  return layer_pigment(*this, world_point, world_normal, uv);
+                              const math::Vec2& uv, const math::Vec3& ray_direction) const {
+  return layer_pigment(*this, world_point, world_normal, uv, ray_direction);
 }
 
 math::Vec3 Texture::own_shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
@@ -103,15 +109,15 @@ bool Texture::may_transmit() const {
   return true;
 }
 
-Rgbft Texture::pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
-                          const math::Vec2& uv) const {
-  if (!below) return layer_pigment(*this, world_point, world_normal, uv);
+Rgbft Texture::pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal, const math::Vec2& uv,
+                          const math::Vec3& ray_direction) const {
+  if (!below) return layer_pigment(*this, world_point, world_normal, uv, ray_direction);
   // Front to back, as POV-Ray composites layers (lighting.cpp, ComputeLightedTexture): each layer adds
   // its opaque part, weighted by what the layers above let through, and passes on its filter/transmit.
   math::Color color(0);
   math::Color through(1);
   for (const Texture* layer = this; layer; layer = layer->below.get()) {
-    const Rgbft c = layer_pigment(*layer, world_point, world_normal, uv);
+    const Rgbft c = layer_pigment(*layer, world_point, world_normal, uv, ray_direction);
     const double opaque = std::max(0.0, 1 - c.filter - c.transmit);
     color += through * c.rgb * opaque;
     through *= c.rgb * c.filter + math::Color(c.transmit);

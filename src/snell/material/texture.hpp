@@ -1,5 +1,7 @@
 #pragma once
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "snell/material/finish.hpp"
 #include "snell/material/normal.hpp"
@@ -40,15 +42,23 @@ struct Texture {
   /// The layer under this one (POV-Ray 3.7 reference, "Layered Textures": `texture {A} texture {B}` puts
   /// B on top of A; where B's pigment is transparent, A shows through). Null for a single texture.
   std::shared_ptr<const Texture> below;
+  /// `average texture_map {..}` (POV-Ray trace.cpp, ComputeAverageTextureColours): the entries with their
+  /// weights, already placed in world space. The renderer lights each entry on its own and averages the
+  /// results; pigment, normal and finish above hold one blended stand-in for shadows and other uses.
+  std::vector<std::pair<double, std::shared_ptr<const Texture>>> averaged;
 
   /// This texture with `t` applied after its transforms, on every layer.
   std::shared_ptr<const Texture> transformed(const math::Transform& t) const;
+  /// Applies `t` after this texture's transforms in place: its own, its layers' and its averaged entries'.
+  void move(const math::Transform& t);
   /// `top` placed over `bottom` (each may already be layered): a copy of top's chain ending on bottom.
   static std::shared_ptr<const Texture> layered(const std::shared_ptr<const Texture>& top,
                                                 std::shared_ptr<const Texture> bottom);
   /// The pigment of the whole stack at a world point: each layer's colour over the ones below by its
-  /// filter and transmit.
-  Rgbft pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal, const math::Vec2& uv) const;
+  /// filter and transmit. `ray_direction` (unit) is the ray that met the point, for patterns that
+  /// depend on it (`aoi`); zero where there is none.
+  Rgbft pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal, const math::Vec2& uv,
+                   const math::Vec3& ray_direction = {}) const;
 
   /// The shading normal at a world point: `world_normal` (unit) bent by the first layer that has a
   /// `normal {}`, in that layer's texture space; `world_normal` itself when none has.
@@ -62,8 +72,8 @@ struct Texture {
   /// This layer alone, without the layers below: its pigment, and `world_normal` bent by its own
   /// `normal {}` (unchanged without one). POV-Ray lights each layer with its own finish and normal
   /// (trace.cpp, ComputeLightedTexture), which render/layered_shading.cpp follows.
-  Rgbft own_pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal,
-                       const math::Vec2& uv) const;
+  Rgbft own_pigment_at(const math::Vec3& world_point, const math::Vec3& world_normal, const math::Vec2& uv,
+                       const math::Vec3& ray_direction = {}) const;
   math::Vec3 own_shading_normal(const math::Vec3& world_point, const math::Vec3& world_normal,
                                 const math::Vec2& uv) const;
 

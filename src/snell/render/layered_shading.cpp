@@ -17,13 +17,13 @@ math::Color WhittedIntegrator::lower_layers(const ShadingPoint& top, const math:
                                             math::Color& filter) const {
   const scene::SurfaceHit& hit = *top.hit;
   math::Color result(0);
-  for (const material::Texture* layer = hit.object->texture->below.get(); layer; layer = layer->below.get()) {
+  for (const material::Texture* layer = top.texture->below.get(); layer; layer = layer->below.get()) {
     const double trans = std::min(1.0, std::fabs(filter.grey()));
     if (trans <= scene_.settings.adc_bailout) break;
     ShadingPoint sp = top;
     sp.finish = &layer->finish_at(hit.texture_point);
     sp.normal = layer->own_shading_normal(hit.texture_point, shape_normal, hit.uv);
-    sp.pigment = layer->own_pigment_at(hit.texture_point, hit.normal, hit.uv);
+    sp.pigment = layer->own_pigment_at(hit.texture_point, hit.normal, hit.uv, top.ray->direction);
     sp.opacity = opacity_of(sp.pigment, scene_.settings.language_version);
     const double layer_weight = weight * trans;
     double reflect_weight = layer_weight;

@@ -90,7 +90,7 @@ Color PathIntegrator::sample_emitters(const Vec3& point, const Vec3& n, const Ve
   if (!accel_.intersect(ray, 0.0, math::kInfinity, scene::RayKind::reflection, hit) || hit.object != e.object)
     return {};
   const Color le = emitted(hit.object->texture->finish_at(hit.point),
-                           hit.object->texture->pigment_at(hit.point, hit.normal, hit.uv));
+                           hit.object->texture->pigment_at(hit.point, hit.normal, hit.uv, ray.direction));
   // Each lobe is its own MIS pair (light sampling vs. that lobe's sampling, chosen with its probability).
   const Vec3 mirror = math::reflect(-wo, n);
   const double pdf_diffuse = lobes.p_diffuse * lobe_pdf(n, *dir, 1);
@@ -156,7 +156,7 @@ Color PathIntegrator::trace_camera_ray(const math::Ray& camera_ray, TraceContext
       break;
     }
     const material::Finish& f = hit.object->texture->finish_at(hit.point);
-    const material::Rgbft pc = hit.object->texture->pigment_at(hit.point, hit.normal, hit.uv);
+    const material::Rgbft pc = hit.object->texture->pigment_at(hit.point, hit.normal, hit.uv, ray.direction);
     const bool entering = dot(hit.normal, ray.direction) < 0;
     const Vec3 n = entering ? hit.normal : -hit.normal;
     const Vec3 wo = -ray.direction;

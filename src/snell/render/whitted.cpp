@@ -201,11 +201,15 @@ Color WhittedIntegrator::shadowed(const scene::Light& light, const Vec3& point, 
 }
 
 Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int level, double weight,
-                               const InteriorStack& inside, TraceContext& context) const {
+                               const InteriorStack& inside, TraceContext& context,
+                               const material::Texture* texture_entry) const {
+  const material::Texture& texture = texture_entry ? *texture_entry : *hit.object->texture;
+  if (!texture.averaged.empty()) return shade_averaged(ray, hit, texture, level, weight, inside, context);
   ShadingPoint sp;
   sp.ray = &ray;
   sp.hit = &hit;
-  sp.finish = &hit.object->texture->finish_at(hit.texture_point);
+  sp.texture = &texture;
+  sp.finish = &texture.finish_at(hit.texture_point);
   sp.point = hit.point;
   sp.raw_normal = hit.normal;
   Vec3 shape_normal = hit.shading_normal;
@@ -219,9 +223,8 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   // The texture's normal then bends the oriented normal, as POV-Ray perturbs its flipped raw normal
   // (trace.cpp: layNormal = rawnormal; Perturb_Normal); a bump may face away, and it keeps it.
   // The top layer's own normal and pigment; layers below are lit on their own (layered_shading.cpp).
-  const material::Texture& texture = *hit.object->texture;
   sp.normal = texture.own_shading_normal(hit.texture_point, shape_normal, hit.uv);
-  sp.pigment = texture.own_pigment_at(hit.texture_point, hit.normal, hit.uv);
+  sp.pigment = texture.own_pigment_at(hit.texture_point, hit.normal, hit.uv, ray.direction);
   sp.observer = context.observer;
   sp.highlights = context.radiosity_depth == 0;
   const material::Rgbft& pc = sp.pigment;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "snell/material/texture.hpp"
 #include "snell/render/integrator.hpp"
 #include "snell/render/interior_stack.hpp"
 #include "snell/render/light_ray.hpp"
@@ -37,8 +38,14 @@ class WhittedIntegrator final : public Integrator {
 
  private:
   struct ShadingPoint;
+  /// `texture`: the texture to light, when not the hit object's own (an entry of an averaged texture).
   math::Color shade(const math::Ray& ray, const scene::SurfaceHit& hit, int level, double weight,
-                    const InteriorStack& inside, TraceContext& context) const;
+                    const InteriorStack& inside, TraceContext& context,
+                    const material::Texture* texture = nullptr) const;
+  /// An averaged texture: each entry lit in full, the weighted mean (average_shading.cpp).
+  math::Color shade_averaged(const math::Ray& ray, const scene::SurfaceHit& hit,
+                             const material::Texture& texture, int level, double weight,
+                             const InteriorStack& inside, TraceContext& context) const;
   /// How much the surface reflects (POV-Ray's reflectivity with fresnel, falloff and metallic); scales
   /// `weight` by the most it can reflect.
   math::Color reflectivity_of(const ShadingPoint& sp, double relative_ior, double& weight) const;

@@ -3,6 +3,7 @@
 // layered_shading.cpp (one per layer of a layered texture).
 #include "snell/material/finish.hpp"
 #include "snell/material/rgbft.hpp"
+#include "snell/material/texture.hpp"
 #include "snell/math/ray.hpp"
 #include "snell/render/whitted.hpp"
 #include "snell/scene/object.hpp"
@@ -12,6 +13,8 @@ namespace snell::render {
 struct WhittedIntegrator::ShadingPoint {
   const math::Ray* ray;
   const scene::SurfaceHit* hit;
+  /// The texture lit here: the hit object's, or one entry of its averaged texture.
+  const material::Texture* texture;
   const material::Finish* finish;
   math::Vec3 point;
   /// Geometric and shading normals, both turned to face the incoming ray.

@@ -299,9 +299,8 @@ std::shared_ptr<const material::Texture> Parser::parse_texture_body(const char* 
       continue;
     }
     if (auto step = parse_transform_item()) {
-      texture->transform = *step * texture->transform;
-      // A declared layered texture moves as a whole.
-      if (texture->below) texture->below = texture->below->transformed(*step);
+      // A declared layered or averaged texture moves as a whole.
+      texture->move(*step);
       continue;
     }
     if (parse_texture_pattern(patterned)) continue;

@@ -6,6 +6,7 @@
 
 #include "snell/sdl/parser.hpp"
 #include "snell/sdl/pigment_builder.hpp"
+#include "snell/texture/aoi_pattern.hpp"
 #include "snell/texture/cellular_patterns.hpp"
 #include "snell/texture/function_pattern.hpp"
 #include "snell/texture/image_pattern.hpp"
@@ -16,6 +17,7 @@
 #include "snell/texture/ripple_patterns.hpp"
 #include "snell/texture/slope_pattern.hpp"
 #include "snell/texture/spiral_patterns.hpp"
+#include "snell/texture/tiling_patterns.hpp"
 #include "snell/texture/value_patterns.hpp"
 
 namespace snell::sdl {
@@ -34,7 +36,7 @@ PigmentPtr solid(const material::Rgbft& c) {
 
 /// Patterns POV-Ray has that snell does not evaluate yet: named in the error rather than "unexpected".
 bool is_unsupported_pattern(const std::string& w) {
-  static const char* const patterns[] = {"pavement", "tiling", "aoi"};
+  static const char* const patterns[] = {"pavement"};
   for (const char* p : patterns)
     if (w == p) return true;
   return false;
@@ -152,6 +154,15 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
     value = std::make_shared<texture::ImagePattern>(image);
   } else if (w == "cells") {
     value = std::make_shared<texture::CellsPattern>();
+  } else if (w == "aoi") {
+    value = std::make_shared<texture::AoiPattern>();
+  } else if (w == "tiling") {
+    raw_next();
+    const Token number = peek();
+    const int n = static_cast<int>(parse_float());
+    if (!texture::TilingPattern::supported(n))
+      fail(number.where, "tiling " + std::to_string(n) + " is not supported yet (snell has tilings 1 to 5)");
+    value = std::make_shared<texture::TilingPattern>(n);
   } else if (w == "function") {
     raw_next();
     value = parse_function_pattern(t);
@@ -170,7 +181,7 @@ bool Parser::parse_pattern_type(PigmentBuilder& b) {
   }
   if (value) {
     if (w != "gradient" && w != "image_pattern" && w != "slope" && w != "function" &&
-        w != "pigment_pattern" && w != "potential")
+        w != "pigment_pattern" && w != "potential" && w != "tiling")
       raw_next();
     b.start_pattern();
     b.spec.value_pattern = std::move(value);

@@ -31,7 +31,7 @@ std::shared_ptr<const Function> pattern_function(texture::PatternSpec spec) {
       out[0] = shared->block_pattern->block(p);
       return;
     }
-    out[0] = shared->wave.apply(shared->value_pattern->value_at(p, {}));
+    out[0] = shared->wave.apply(shared->value_pattern->value_at(p, {}, {}));
   });
 }
 

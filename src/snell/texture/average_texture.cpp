@@ -13,6 +13,7 @@ void average_textures(const std::vector<std::pair<double, std::shared_ptr<const 
   std::vector<std::pair<double, NormalPtr>> normals;
   bool any_normal = false;
   const material::Texture* heaviest = nullptr;
+  out.averaged.clear();
   double heaviest_weight = 0;
   for (const auto& [weight, entry] : entries) {
     if (!entry) continue;
@@ -26,6 +27,7 @@ void average_textures(const std::vector<std::pair<double, std::shared_ptr<const 
       any_normal = true;
     }
     normals.emplace_back(weight, normal);
+    out.averaged.emplace_back(weight, entry->transformed(out.transform));
     if (!heaviest || weight > heaviest_weight) {
       heaviest = entry.get();
       heaviest_weight = weight;

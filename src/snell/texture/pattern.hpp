@@ -14,8 +14,11 @@ class ValuePattern {
   virtual ~ValuePattern() = default;
   /// The pattern's value at `p` (texture space), in [0,1] before the wave function.
   virtual double value(const Vec3& p) const = 0;
-  /// The value where the surface normal matters too (`slope`); `world_normal` is unit length.
-  virtual double value_at(const Vec3& p, const Vec3& world_normal) const { return value(p); }
+  /// The value where the surface matters too: `world_normal` (unit, outward, for `slope`) and the unit
+  /// direction of the ray that met it (`aoi`; zero when unknown).
+  virtual double value_at(const Vec3& p, const Vec3& world_normal, const Vec3& ray_direction) const {
+    return value(p);
+  }
 };
 
 /// A pattern with its own way of bending a surface normal (POV-Ray normal.cpp: bumps, dents, wrinkles,

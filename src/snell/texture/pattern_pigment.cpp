@@ -38,7 +38,8 @@ PatternPigment::PatternPigment(PatternSpec spec) : spec_(std::move(spec)) {
 material::Rgbft PatternPigment::at(const material::PatternPoint& point) const {
   const Vec3 p = spec_.warps.apply(point.p);
   if (spec_.block_pattern) return spec_.block_entries[spec_.block_pattern->block(p)]->at(point);
-  const double v = spec_.wave.apply(spec_.value_pattern->value_at(p, point.world_normal));
+  const double v =
+      spec_.wave.apply(spec_.value_pattern->value_at(p, point.world_normal, point.ray_direction));
   if (spec_.pigment_map) return spec_.pigment_map->at(v, point);
   return spec_.color_map->at(v);
 }

@@ -26,7 +26,7 @@ SlopePattern::SlopePattern(const SlopeParams& params) : params_(params) {
   }
 }
 
-double SlopePattern::value_at(const Vec3& p, const Vec3& world_normal) const {
+double SlopePattern::value_at(const Vec3& p, const Vec3& world_normal, const Vec3&) const {
   const double cosine = std::clamp(dot(world_normal, unit_direction_), -1.0, 1.0);
   double slope = stretch((std::asin(cosine) / kPi * 2 + 1) * 0.5, params_.low, params_.high);
   if (!params_.altitude) {

@@ -23,7 +23,7 @@ class SlopePattern final : public ValuePattern {
   double value(const Vec3&) const override { return 0; }
   /// asin(n . d) mapped from [-pi/2, pi/2] to [0, 1] (1 facing `direction`, 0.5 sideways), then blended
   /// with the altitude by the two vectors' lengths.
-  double value_at(const Vec3& p, const Vec3& world_normal) const override;
+  double value_at(const Vec3& p, const Vec3& world_normal, const Vec3& ray_direction) const override;
 
  private:
   SlopeParams params_;

@@ -31,7 +31,8 @@ PatternTextureSelector::PatternTextureSelector(PatternSpec pattern,
 material::TextureSelector::Choice PatternTextureSelector::at(const material::PatternPoint& point) const {
   const Vec3 p = pattern_.warps.apply(point.p);
   if (pattern_.block_pattern) return {blocks_[static_cast<size_t>(pattern_.block_pattern->block(p))].get()};
-  const double v = pattern_.wave.apply(pattern_.value_pattern->value_at(p, point.world_normal));
+  const double v =
+      pattern_.wave.apply(pattern_.value_pattern->value_at(p, point.world_normal, point.ray_direction));
   const MapBracket b = map_bracket(map_, v);
   if (b.lower == b.upper) return {map_[b.lower].second.get()};
   return {map_[b.lower].second.get(), map_[b.upper].second.get(), b.weight};
