@@ -9,6 +9,7 @@ math::Color Media::density_at(const math::Vec3& world_point) const {
   for (const Density& density : densities) {
     const math::Vec3 p = density.transform.inverse_point(world_point);
     d *= density.pigment->at(PatternPoint{p, math::Vec3{0, 0, 0}, math::Vec2{}}).rgb;
+    if (d.is_black()) break;  // the product stays 0: the densities after this one need no evaluation
   }
   return d;
 }

@@ -19,8 +19,9 @@ struct Density {
 };
 
 struct Media {
-  /// Scattering phase functions, numbered as POV-Ray's `scattering { type, colour }`.
-  enum class Phase { isotropic = 1, rayleigh = 2, mie_hazy = 3, mie_murky = 4, henyey_greenstein = 5 };
+  /// Scattering phase functions, numbered as POV-Ray's `scattering { type, colour }` (POV-Ray 3.7 reference,
+  /// "Scattering": 1 isotropic, 2 Mie haze, 3 Mie murky, 4 Rayleigh, 5 Henyey-Greenstein).
+  enum class Phase { isotropic = 1, mie_hazy = 2, mie_murky = 3, rayleigh = 4, henyey_greenstein = 5 };
   Phase phase = Phase::isotropic;
   double eccentricity = 0;
   math::Color absorption{0}, emission{0}, scattering{0};

@@ -11,6 +11,7 @@
 #include "snell/render/light_ray.hpp"
 #include "snell/render/media.hpp"
 #include "snell/render/optics.hpp"
+#include "snell/render/shadow_media.hpp"
 #include "snell/render/subsurface.hpp"
 #include "snell/render/subsurface_povray.hpp"
 #include "snell/render/whitted_shading_point.hpp"
@@ -592,6 +593,10 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
         opaque_at(hit))
       return Color(0);
   }
+  // Media inside the solids crossed thin the light whatever the light's media flags (POV-Ray 3.7 trace.cpp,
+  // ComputeShadowColour; those flags govern the atmosphere only).
+  const bool thinned_by_media = has_interior_media_;
+  ShadowMedia media({point, dir, context.time});
   // Pass through transparent blockers, tinting by each one's transmitted colour (trace.cpp,
   // TracePointLightShadowRay / ComputeShadowColour). Bounded so that coincident surfaces cannot loop.
   for (int crossings = 0; crossings < 64 && remaining > 0; ++crossings) {
@@ -612,12 +617,15 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
       return Color(0);
     light *= transmitted_color(c);
     if (max_abs(light) < scene_.settings.adc_bailout) return Color(0);
+    const scene::Object& solid = hit.solid ? *hit.solid : *hit.object;
+    if (thinned_by_media && ShadowMedia::has_media(solid))
+      media.cross(solid, dot(hit.point - point, dir), hit.normal);
     const Vec3 side = dot(hit.normal, dir) >= 0 ? hit.normal : -hit.normal;
     const Vec3 next = offset_origin(hit.point, side);
     remaining -= dot(next - origin, dir);
     origin = next;
   }
-  return light;
+  return thinned_by_media ? light * media.transmittance(distance) : light;
 }
 
 }  // namespace snell::render
