@@ -1,5 +1,7 @@
 #include "snell/render/renderer.hpp"
 
+#include "snell/render/aa_neighbours.hpp"
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -258,13 +260,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
   // `encoded(x, y)` is that colour through aa_encoded; POV-Ray supersamples at a distance >= the threshold.
   auto supersample = [&](int x, int y, const auto& first, const auto& encoded, TraceContext& ctx) {
     const Color c = first(x, y);
-    const Color e = encoded(x, y);
-    bool differs = false;
-    const int nx[4] = {x - 1, x + 1, x, x};
-    const int ny[4] = {y, y, y - 1, y + 1};
-    for (int k = 0; k < 4 && !differs; ++k)
-      if (nx[k] >= 0 && nx[k] < w && ny[k] >= 0 && ny[k] < h)
-        differs = color_distance(e, encoded(nx[k], ny[k])) >= options_.aa_threshold;
+    const bool differs = differs_from_neighbour(x, y, w, h, options_.aa_threshold, encoded);
     if (!differs) return c;
     ++supersampled;
     const int n = options_.aa_depth;

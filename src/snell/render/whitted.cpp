@@ -602,12 +602,10 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   for (int crossings = 0; crossings < 64 && remaining > 0; ++crossings) {
     scene::SurfaceHit hit;
     if (!accel_.intersect({origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit)) break;
-    // A texture that never transmits stops the ray without its pigment being evaluated.
-    if (!context.observer && !hit.object->texture->may_transmit()) {
-      if (cached) *cached = cacheable_blocker(hit);
-      return Color(0);
-    }
-    const material::Rgbft c = pigment_at(hit);
+    // A texture that never transmits stops the ray without its pigment being evaluated (an observer wants
+    // the colour). Rgbft{} is opaque black.
+    const bool known_opaque = !context.observer && !hit.object->texture->may_transmit();
+    const material::Rgbft c = known_opaque ? material::Rgbft{} : pigment_at(hit);
     if (context.observer) context.observer->shadow_blocker(hit, !c.is_transparent());
     if (!c.is_transparent()) {
       if (cached) *cached = cacheable_blocker(hit);

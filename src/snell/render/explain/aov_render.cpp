@@ -1,5 +1,7 @@
 #include "snell/render/explain/aov_render.hpp"
 
+#include "snell/render/aa_neighbours.hpp"
+
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -132,19 +134,15 @@ AovRender render_aovs(const scene::Scene& scene, const accel::Accelerator& accel
     rows([&](int x, int y, ThreadState& s) { trace_sample(x, y, 0, s); });
     if (!options.antialias) return;
     // Supersample where the first pass differs from a neighbour by more than the threshold (renderer.cpp).
+    std::vector<math::Color> encoded(pixels.size());
+    for (size_t i = 0; i < pixels.size(); ++i)
+      encoded[i] = aa_encoded(pixels[i].colour, options.aa_compare_exponent);
+    auto encoded_at = [&](int px, int py) { return encoded[static_cast<size_t>(py) * w + px]; };
     std::vector<char> refine(pixels.size(), 0);
     for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        auto encoded = [&](int px, int py) {
-          return aa_encoded(pixels[static_cast<size_t>(py) * w + px].colour, options.aa_compare_exponent);
-        };
-        const math::Color c = encoded(x, y);
-        const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
-        for (int k = 0; k < 4; ++k)
-          if (nx[k] >= 0 && nx[k] < w && ny[k] >= 0 && ny[k] < h &&
-              color_distance(c, encoded(nx[k], ny[k])) >= options.aa_threshold)
-            refine[static_cast<size_t>(y) * w + x] = 1;
-      }
+      for (int x = 0; x < w; ++x)
+        refine[static_cast<size_t>(y) * w + x] =
+            differs_from_neighbour(x, y, w, h, options.aa_threshold, encoded_at);
     const int n = options.aa_depth;
     rows([&](int x, int y, ThreadState& s) {
       if (!refine[static_cast<size_t>(y) * w + x]) return;
