@@ -53,10 +53,17 @@ TEST(CameraRender, FocalBlurIsIdenticalForAnyThreadCount) {
   EXPECT_GE(one.rays.camera, 40u * 30u * 7u);
   EXPECT_LT(one.rays.camera, 40u * 30u * 9u);
   EXPECT_GT(one.rays.camera, 40u * 30u * 7u);
-  // The blur samples are the anti-aliasing too: no second pass.
-  const RenderResult aa = render(s, 2, true);
-  EXPECT_EQ(aa.supersampled_pixels, 0u);
-  EXPECT_EQ(aa.image.rgb, one.image.rgb);
+  // Anti-aliasing as POV-Ray's (tracetask.cpp, SupersampleOnePixel): pixels that differ from a neighbour
+  // get 3x3 sub-samples, each a whole focal-blur estimate of at least the first batch of 7 rays; the
+  // others keep their first-pass colour. Same image for any thread count.
+  const RenderResult aa = render(s, 2, true), aa_one = render(s, 1, true);
+  EXPECT_GT(aa.supersampled_pixels, 0u);
+  EXPECT_LT(aa.supersampled_pixels, 40u * 30u / 2);
+  EXPECT_GE(aa.rays.camera, one.rays.camera + aa.supersampled_pixels * 9u * 7u);
+  EXPECT_EQ(aa.image.rgb, aa_one.image.rgb);
+  size_t unchanged = 0;
+  for (size_t i = 0; i < aa.image.rgb.size(); ++i) unchanged += aa.image.rgb[i] == one.image.rgb[i];
+  EXPECT_GE(unchanged, (40u * 30u - aa.supersampled_pixels) * 3u);
   // blur_samples 9, 9: no stopping before 9.
   scene::Scene all = s;
   all.camera.blur_samples_min = 9;

@@ -147,11 +147,12 @@ RenderStats Renderer::render_into(io::Image& image) const {
     throw std::invalid_argument("render target does not match the image size");
   std::vector<Tile> tiles;
   if (!options_.tile_source) tiles = make_tiles(w, h, region());
-  // Focal blur, motion blur and --spp samples already spread over each pixel, so they are its
-  // anti-aliasing too.
+  // Motion blur and --spp samples already spread over each pixel, so they are its anti-aliasing too.
+  // Focal blur is anti-aliased as POV-Ray does it: a pixel that differs from a neighbour gets depth x depth
+  // sub-samples, each one a whole focal-blur estimate.
   const scene::CameraSpec& cam = scene_.camera;
   const int spp = options_.samples_per_pixel;
-  const bool antialias = options_.antialias && !cam.focal_blur() && !cam.motion_blur() && spp == 0;
+  const bool antialias = options_.antialias && !cam.motion_blur() && spp == 0;
   const auto sampler = make_sampler(options_.sampler);
   const Filter filter = *Filter::parse(options_.filter);
   const CameraSampling sampling{*camera, cam, *integrator,    *sampler,      filter,
@@ -190,25 +191,31 @@ RenderStats Renderer::render_into(io::Image& image) const {
   const std::vector<double> thresholds =
       focal_blur ? scene::blur_variance_thresholds(cam.blur_samples, cam.confidence, cam.variance)
                  : std::vector<double>{};
-  auto blurred_pixel = [&](int x, int y, TraceContext& ctx) {
+  // `sub` 0 is the pixel's first sample, spread over the pixel; anti-aliasing's sub-sample k is spread
+  // over a pixel-sized square centred on its point (px, py) in pixels, as POV-Ray traces each sub-sample
+  // through the whole focal blur (tracetask.cpp, SupersampleOnePixel).
+  auto blurred_sample = [&](int x, int y, int sub, double px, double py, TraceContext& ctx) {
     const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
     const uint64_t frame = static_cast<uint64_t>(options_.frame);
-    constexpr uint64_t kStream = 0x2545f4914f6cdd1dULL;
-    ctx.rng.seed(math::mix_seed(pixel, 0x1e45, frame, options_.seed), kStream);
+    const uint64_t stream = 0x2545f4914f6cdd1dULL + 2 * static_cast<uint64_t>(sub);
+    ctx.rng.seed(math::mix_seed(pixel, 0x1e45, frame, options_.seed), stream);
     const double shift_u = ctx.rng.next_double(), shift_v = ctx.rng.next_double();
+    const double pix_u = ctx.rng.next_double(), pix_v = ctx.rng.next_double();
     Color sum{0, 0, 0}, sum_sq{0, 0, 0};
     int n = 0;
     for (int batch = 0; n < cam.blur_samples; ++batch) {
       const int size = scene::blur_batch_size(batch, cam.blur_samples);
       for (int i = 0; i < size && n < cam.blur_samples; ++i, ++n) {
-        ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(n) + 1, frame, options_.seed), kStream);
-        const double dx = ctx.rng.next_double(), dy = ctx.rng.next_double();
+        ctx.rng.seed(math::mix_seed(pixel, static_cast<uint64_t>(n) + 1, frame, options_.seed), stream);
+        // Where in the pixel: Roberts' R2 sequence shifted per pixel, so every prefix covers the pixel.
+        const math::Vec2 in_pixel = scene::r2_point(n + 1, pix_u, pix_v);
+        const double dx = in_pixel.u, dy = in_pixel.v;
         // POV-Ray's hexagonal lens grids for 7, 19 and 37 samples, other counts a low-discrepancy disc.
         const double jitter_u = ctx.rng.next_double(), jitter_v = ctx.rng.next_double();
         const math::Vec2 lens = scene::hex_lens_sample(n, cam.blur_samples, jitter_u, jitter_v)
                                     .value_or(scene::lens_sample(n, shift_u, shift_v));
         const double time = sampling.shutter_time(sampling.pixel_seed(x, y), n, cam.blur_samples);
-        const auto ray = camera->generate_lens_ray((x + dx) / w, (y + dy) / h, lens.u, lens.v, time);
+        const auto ray = camera->generate_lens_ray((px + dx - 0.5) / w, (py + dy - 0.5) / h, lens.u, lens.v, time);
         const Color c = ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx, camera->max_distance()),
                                               ctx.counters)
                             : Color{0, 0, 0};
@@ -227,7 +234,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
   // Pass 1: one ray through each pixel centre (or the --spp, focal blur or motion blur samples).
   auto first_sample = [&](int x, int y, TraceContext& ctx) {
     if (spp > 0) return sampling.filtered_pixel(x, y, spp, ctx);
-    if (focal_blur) return blurred_pixel(x, y, ctx);
+    if (focal_blur) return blurred_sample(x, y, 0, x + 0.5, y + 0.5, ctx);
     if (cam.motion_blur()) return sampling.filtered_pixel(x, y, cam.shutter_samples, ctx);
     return trace_point((x + 0.5) / w, (y + 0.5) / h, ctx);
   };
@@ -267,7 +274,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
     Color sum = c;
     for (int k = 1; k <= n * n; ++k) {
       const math::Vec2 p = sample_position(options_, x, y, k, ctx.rng);
-      sum += trace_point(p.u, p.v, ctx);
+      sum += focal_blur ? blurred_sample(x, y, k, p.u * w, p.v * h, ctx) : trace_point(p.u, p.v, ctx);
     }
     return sum / static_cast<double>(n * n + 1);
   };

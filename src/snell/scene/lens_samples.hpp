@@ -9,6 +9,9 @@
 
 namespace snell::scene {
 
+/// Point `index` of the R2 sequence in the unit square, shifted by (shift_u, shift_v) modulo 1.
+math::Vec2 r2_point(int index, double shift_u, double shift_v);
+
 /// Sample `index` on the disc of radius 1/2 centred at the origin; `shift_u`, `shift_v` in [0,1) are the
 /// pixel's shift of the sequence.
 math::Vec2 lens_sample(int index, double shift_u, double shift_v);
