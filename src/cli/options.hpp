@@ -86,7 +86,7 @@ struct CliOptions {
 };
 
 /// POV-Ray style: `+Iscene.pov +Oout.png +W640 +H480 +A0.3 +R3 +J +Ldir -D +WT4`, plus snell's
-/// `--quiet`, `--stats`, `--threads N`, `--accel NAME`. Unknown flags become warnings. Throws UsageError.
+/// `--quiet`, `--stats`, `--threads N`, `--accel NAME`. Known but unsupported POV-Ray switches become warnings; unknown ones throw UsageError.
 CliOptions parse_pov_arguments(const std::vector<std::string>& args);
 
 /// Replaces each ini file among `args` (`scene.ini`, `+Iscene.ini`) by its lines. Throws UsageError.

@@ -43,6 +43,15 @@ constexpr const char* kUnsupported[] = {"Q",  "AG", "UA", "GA", "GD", "GF", "GR"
 /// Known switches without an effect on a batch render: accepted silently.
 constexpr const char* kIgnored[] = {"V", "X", "GP"};
 
+/// POV-Ray stops on a switch it does not know ("Failed to parse command-line option"); so does snell,
+/// pointing at the snell form for the -o/-w/-h style flags people type by habit.
+UsageError unknown_option(const std::string& arg) {
+  return UsageError(
+      "unknown option '" + arg +
+      "' (POV-Ray style: +Iscene.pov +Oout.png +W640 +H480; snell style: snell render scene.pov "
+      "-o out.png -w 640 -h 480; see snell --help)");
+}
+
 }  // namespace
 
 CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
@@ -100,7 +109,7 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
       } else if (name == "--filter") {
         o.filter = eq == std::string::npos ? next_value(name) : value;
       } else {
-        o.warnings.push_back("unknown option '" + arg + "' ignored");
+        throw unknown_option(arg);
       }
       continue;
     }
@@ -113,7 +122,8 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
       } else if (o.input.empty()) {
         o.input = arg;
       } else {
-        o.warnings.push_back("extra argument '" + arg + "' ignored");
+        throw UsageError("extra argument '" + arg + "': the scene is already '" + o.input.string() +
+                         "' (the output file is given as +O" + arg + ")");
       }
       continue;
     }
@@ -208,7 +218,7 @@ CliOptions parse_pov_arguments(const std::vector<std::string>& command_line) {
                             [&](const char* k) { return starts_with(key, k); }) != std::end(kUnsupported)) {
       o.warnings.push_back("option '" + arg + "' is not supported yet; ignored");
     } else {
-      o.warnings.push_back("unknown option '" + arg + "' ignored");
+      throw unknown_option(arg);
     }
   }
   return o;

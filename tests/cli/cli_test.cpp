@@ -76,11 +76,20 @@ TEST(CliTest, BadNumberAndUnknownAcceleratorAreUsageErrors) {
   EXPECT_EQ(run("render " + scene_file() + " --accel octopus").code, 2);
 }
 
-TEST(CliTest, UnknownPovFlagIsOnlyAWarning) {
-  // The scene error (exit 1) shows the command line itself was accepted despite +ZZ and +Q9.
-  const Outcome r = run("+I" + scene_file() + " +W10 +H10 +ZZ +Q9 -D");
+TEST(CliTest, KnownButUnsupportedPovFlagIsOnlyAWarning) {
+  // The scene error (exit 1) shows the command line itself was accepted despite +Q9.
+  const Outcome r = run("+I" + scene_file() + " +W10 +H10 +Q9 -D");
   EXPECT_NE(r.code, 2) << r.output;
-  EXPECT_NE(r.output.find("warning: unknown option '+ZZ'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("warning: option '+Q9' is not supported yet"), std::string::npos) << r.output;
+}
+
+TEST(CliTest, UnknownPovFlagOrExtraArgumentIsAUsageError) {
+  // As POV-Ray ("Failed to parse command-line option"): exit 2 and one line naming the option.
+  for (const std::string bad : {" +ZZ", " --bogus", " -o out.png", " extra.pov"}) {
+    const Outcome r = run("+I" + scene_file() + " +W10 +H10 -D" + bad);
+    EXPECT_EQ(r.code, 2) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find("error:"), std::string::npos) << r.output;
+  }
 }
 
 }  // namespace

@@ -215,7 +215,8 @@ RenderStats Renderer::render_into(io::Image& image) const {
         const math::Vec2 lens = scene::hex_lens_sample(n, cam.blur_samples, jitter_u, jitter_v)
                                     .value_or(scene::lens_sample(n, shift_u, shift_v));
         const double time = sampling.shutter_time(sampling.pixel_seed(x, y), n, cam.blur_samples);
-        const auto ray = camera->generate_lens_ray((px + dx - 0.5) / w, (py + dy - 0.5) / h, lens.u, lens.v, time);
+        const auto ray =
+            camera->generate_lens_ray((px + dx - 0.5) / w, (py + dy - 0.5) / h, lens.u, lens.v, time);
         const Color c = ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx, camera->max_distance()),
                                               ctx.counters)
                             : Color{0, 0, 0};
