@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "snell/math/constants.hpp"
@@ -29,20 +30,41 @@ Vec3 light_axis(const scene::Light& light) {
 /// (POV-Ray 3.7 lightsource.cpp, Attenuate_Light): cos^tightness, times a smooth step from the falloff cone
 /// to the radius cone. The step applies whenever cos(radius) > 0, so `radius 0` gives a beam that fades
 /// all the way from its axis to the falloff angle.
+/// cos(radius) and cos(max(falloff, radius)) of a spotlight, remembered per thread in a few slots keyed by
+/// the light's address and checked against its angles, so scenes with several spotlights (media1 has three)
+/// compute the two cosines once per light, not twice per lit point.
+struct ConeCosines {
+  const scene::Light* light = nullptr;
+  double radius = 0, falloff = 0, cos_radius = 1, cos_falloff = 1;
+};
+
+const ConeCosines& cone_cosines(const scene::Light& light) {
+  constexpr size_t kSlots = 8;
+  thread_local ConeCosines slots[kSlots];
+  const auto address = reinterpret_cast<std::uintptr_t>(&light);
+  ConeCosines& slot = slots[(address / alignof(scene::Light)) % kSlots];
+  if (slot.light != &light || slot.radius != light.radius || slot.falloff != light.falloff) {
+    slot.light = &light;
+    slot.radius = light.radius;
+    slot.falloff = light.falloff;
+    slot.cos_radius = std::cos(math::radians(light.radius));
+    slot.cos_falloff = std::cos(math::radians(std::max(light.falloff, light.radius)));
+  }
+  return slot;
+}
+
+/// Attenuation for the cone of a spotlight, given the cosine between the axis and the direction to the point
+/// (POV-Ray 3.7 lightsource.cpp, Attenuate_Light): cos^tightness, times a smooth step from the falloff cone
+/// to the radius cone. The step applies whenever cos(radius) > 0, so `radius 0` gives a beam that fades
+/// all the way from its axis to the falloff angle.
 double spot_attenuation(const scene::Light& light, double cos_theta) {
   if (cos_theta <= 0) return 0;
-  double a = light.tightness != 0 ? std::pow(cos_theta, light.tightness) : 1.0;
-  // The cone's cosines, kept from the last call on this thread: the same spotlight asks again and again,
-  // and two cos() per lit point were 7% of a spotlight scene's time.
-  thread_local double last_radius = std::numeric_limits<double>::quiet_NaN(), last_falloff = 0;
-  thread_local double cos_radius = 1, cos_falloff = 1;
-  if (!(light.radius == last_radius && light.falloff == last_falloff)) {
-    last_radius = light.radius;
-    last_falloff = light.falloff;
-    cos_radius = std::cos(math::radians(light.radius));
-    cos_falloff = std::cos(math::radians(std::max(light.falloff, light.radius)));
-  }
-  if (cos_radius > 0 && cos_theta < cos_radius) a *= cone_spline(cos_falloff, cos_radius, cos_theta);
+  double a = light.tightness == 0   ? 1.0
+             : light.tightness == 1 ? cos_theta
+                                    : std::pow(cos_theta, light.tightness);
+  const ConeCosines& cone = cone_cosines(light);
+  if (cone.cos_radius > 0 && cos_theta < cone.cos_radius)
+    a *= cone_spline(cone.cos_falloff, cone.cos_radius, cos_theta);
   return a;
 }
 
