@@ -35,6 +35,7 @@ TEST(KdTreeTest, NearestMatchesBruteForce) {
   for (int i = 0; i < 50; ++i) points.push_back(points[static_cast<size_t>(i)]);
   const KdTree tree(points);
   ASSERT_EQ(tree.size(), points.size());
+  std::vector<Neighbour> reused;
   for (int q = 0; q < 300; ++q) {
     const math::Vec3 c{rng.next_double(), rng.next_double(), 0.05};
     const size_t k = 1 + static_cast<size_t>(q % 40);
@@ -42,6 +43,10 @@ TEST(KdTreeTest, NearestMatchesBruteForce) {
     const auto expected = brute_force(points, c, k, radius);
     const auto got = tree.nearest(c, k, radius);
     ASSERT_EQ(got.size(), expected.size()) << "query " << q;
+    // The same answer into a buffer kept from the previous query (larger k then, so stale entries).
+    tree.nearest(c, k, radius, reused);
+    ASSERT_EQ(reused.size(), got.size()) << "query " << q;
+    for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(reused[i].index, got[i].index);
     for (size_t i = 0; i < got.size(); ++i) {
       EXPECT_EQ(got[i].index, expected[i].index) << "query " << q << " rank " << i;
       EXPECT_DOUBLE_EQ(got[i].distance_squared, expected[i].distance_squared);

@@ -22,6 +22,8 @@ class KdTree {
   /// Up to `k` points within `max_radius` of `centre`, nearest first; equal distances are ordered by
   /// index, so the answer does not depend on the tree's layout.
   std::vector<Neighbour> nearest(const math::Vec3& centre, size_t k, double max_radius) const;
+  /// The same into `found` (cleared first), whose capacity the caller keeps from query to query.
+  void nearest(const math::Vec3& centre, size_t k, double max_radius, std::vector<Neighbour>& found) const;
 
   size_t size() const { return nodes_.size(); }
 
@@ -29,12 +31,12 @@ class KdTree {
   struct Node {
     math::Vec3 point;
     uint32_t index;
-    /// Axis the node splits its range on (0, 1, 2); 3 for a leaf.
+    /// Axis the node splits its range on (0, 1, 2); 3 where the range is a leaf, scanned whole.
     uint8_t axis;
   };
   void build(std::vector<Node>& items, size_t lo, size_t hi);
   void search(size_t lo, size_t hi, const math::Vec3& centre, size_t k, double& radius_squared,
-              std::vector<Neighbour>& heap) const;
+              std::vector<Neighbour>& found) const;
 
   std::vector<Node> nodes_;
 };

@@ -74,10 +74,12 @@ double PhotonMap::estimate_gather_radius() const {
   return radius * (1.0 + 20.0 * static_cast<double>(sparse) / static_cast<double>(samples));
 }
 
-PhotonMap::Found PhotonMap::gather(const Vec3& point, const Vec3& normal, double size) const {
+void PhotonMap::gather(const Vec3& point, const Vec3& normal, double size, Found& f) const {
   const size_t k = static_cast<size_t>(settings_.gather_max);
-  Found f;
-  std::vector<Neighbour> near = tree_.nearest(point, k, size);
+  f.photons.clear();
+  // One buffer per thread for the tree's answer: a gather per shading point must not allocate.
+  thread_local std::vector<Neighbour> near;
+  tree_.nearest(point, k, size, near);
   f.radius = near.size() >= k && !near.empty() ? std::sqrt(near.back().distance_squared) : size;
   // A flattened search: distances grow with the offset along the normal, so photons on a nearby wall at a
   // corner do not bleed in (POV-Ray photons.cpp, gatherPhotonsRec's "discFix").
@@ -86,25 +88,27 @@ PhotonMap::Found PhotonMap::gather(const Vec3& point, const Vec3& normal, double
     const double off_plane = std::fabs(dot(normal, photons_[nb.index].position - point));
     if (nb.distance_squared * (1 + 16 * off_plane) <= limit) f.photons.push_back(nb);
   }
-  return f;
 }
 
 Color PhotonMap::radiance(const Vec3& point, const Vec3& raw_normal, const Vec3& normal,
                           bool double_illuminate, const Response& response) const {
   if (photons_.empty() || settings_.gather_max <= 0 || !(gather_radius_ > 0)) return Color(0);
   double size = gather_radius_;
-  Found found = gather(point, normal, size);
+  // Per-thread buffers, kept between calls: the surface response below traces nothing, so no second
+  // gather on this thread can start while these are in use.
+  thread_local Found found, wider;
+  gather(point, normal, size, found);
   double previous = static_cast<double>(found.photons.size()) / (found.radius * found.radius);
   if (previous == 0) previous = 1e-16;
   for (int step = 1; step < kGatherSteps && found.photons.size() < static_cast<size_t>(settings_.gather_min);
        ++step) {
     size += 2 * gather_radius_;
-    Found wider = gather(point, normal, size);
+    gather(point, normal, size, wider);
     const double count = static_cast<double>(wider.photons.size());
     const double density = count / (wider.radius * wider.radius);
     const bool few = count > 0 && count < settings_.expand_min_count;
     if (!((density - previous) / previous < settings_.expand_tolerance || few)) break;
-    found = std::move(wider);
+    std::swap(found, wider);
     previous = density > 0 ? density : 1e-16;
   }
   if (found.photons.empty() || !(found.radius > 0)) return Color(0);

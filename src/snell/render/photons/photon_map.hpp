@@ -43,7 +43,8 @@ class PhotonMap {
     std::vector<Neighbour> photons;
     double radius = 0;
   };
-  Found gather(const math::Vec3& point, const math::Vec3& normal, double size) const;
+  /// The photons for `point` into `f` (its buffer reused).
+  void gather(const math::Vec3& point, const math::Vec3& normal, double size, Found& f) const;
   double estimate_gather_radius() const;
 
   memory::Charge charge_;
