@@ -63,8 +63,12 @@ class GridSampler {
         axis2_(axis2),
         rng_(rng),
         shadow_(shadow),
-        grid_(static_cast<size_t>(light.size1) * static_cast<size_t>(light.size2)),
-        known_(grid_.size(), false) {}
+        grid_(grid_buffer()),
+        known_(known_buffer()) {
+    const size_t n = static_cast<size_t>(light.size1) * static_cast<size_t>(light.size2);
+    grid_.resize(n);
+    known_.assign(n, 0);
+  }
 
   /// Mean over the region [u1,u2] x [v1,v2] at recursion `level`.
   Color region(int u1, int v1, int u2, int v2, int level) {
@@ -90,17 +94,28 @@ class GridSampler {
     const size_t i = static_cast<size_t>(u) * static_cast<size_t>(light_.size2) + static_cast<size_t>(v);
     if (!known_[i]) {
       grid_[i] = shadow_(area_light_sample_offset(light_, axis1_, axis2_, u, v, rng_));
-      known_[i] = true;
+      known_[i] = 1;
     }
     return grid_[i];
+  }
+
+  // The grid's buffers live on per thread: one area light test per lit point must not allocate. Shadow
+  // rays shade nothing, so no second sampler starts on this thread while one is in use.
+  static std::vector<Color>& grid_buffer() {
+    thread_local std::vector<Color> buffer;
+    return buffer;
+  }
+  static std::vector<char>& known_buffer() {
+    thread_local std::vector<char> buffer;
+    return buffer;
   }
 
   const scene::Light& light_;
   Vec3 axis1_, axis2_;
   math::Pcg32& rng_;
   const std::function<Color(const Vec3&)>& shadow_;
-  std::vector<Color> grid_;
-  std::vector<bool> known_;
+  std::vector<Color>& grid_;
+  std::vector<char>& known_;
 };
 
 }  // namespace

@@ -417,9 +417,14 @@ Color WhittedIntegrator::trace_reflection(const ShadingPoint& sp, const Vec3& di
 
 Color WhittedIntegrator::direct_light(const ShadingPoint& sp, TraceContext& context) const {
   const bool double_illuminate = sp.hit->object->flags.double_illuminate;
+  // Radiosity's gather rays see an area light as a point light at its centre (POV-Ray 3.7 radiosity.cpp,
+  // GetRadiosityQualityFlags clears Q_AREA_LIGHT): the light it bounces is an average anyway, and a full
+  // grid of shadow rays behind every gather ray was most of a radiosity scene's time.
+  const bool area_lights = context.radiosity_depth == 0;
   Color sum;
   for (const scene::Light& light : scene_.lights) {
-    if (light.area && light.area_illumination) {
+    const bool area = light.area && area_lights;
+    if (area && light.area_illumination) {
       sum += full_area_light(sp, light, context);
       continue;
     }
@@ -429,8 +434,8 @@ Color WhittedIntegrator::direct_light(const ShadingPoint& sp, TraceContext& cont
     if (!double_illuminate && cos_l < kEpsilon) continue;
     Color lc = lr.color;
     if (!light.shadowless) {
-      lc = light.area ? area_shadow(sp, light, lr, context)
-                      : shadowed(light, sp.point, sp.raw_normal, lr, lc, context);
+      lc = area ? area_shadow(sp, light, lr, context)
+                : shadowed(light, sp.point, sp.raw_normal, lr, lc, context);
       if (max_abs(lc) < kEpsilon) continue;
     }
     sum += surface_response(sp, lr.direction, lc);
