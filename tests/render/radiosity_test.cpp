@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "scene_builder.hpp"
 #include "snell/accel/accelerator.hpp"
@@ -131,6 +133,44 @@ TEST(RadiosityTest, SameImageForAnyThreadCount) {
   const RenderResult three = render_small(s, 3);
   for (int y = 0; y < 9; ++y)
     for (int x = 0; x < 9; ++x) EXPECT_EQ(one.image.at(x, y), three.image.at(x, y));
+}
+
+/// Pretrace passes and rays from the radiosity line of the statistics ("N pretrace passes (M rays)").
+std::pair<uint64_t, uint64_t> pretrace_counts(const RenderResult& r) {
+  unsigned long long passes = 0, rays = 0;
+  const size_t at = r.integrator_summary.find("radiosity: ");
+  if (at == std::string::npos ||
+      std::sscanf(r.integrator_summary.c_str() + at, "radiosity: %llu pretrace passes (%llu rays)", &passes,
+                  &rays) != 2)
+    ADD_FAILURE() << r.integrator_summary;
+  return {passes, rays};
+}
+
+TEST(RadiosityTest, GatherRaysSeeAreaLightsAsPointLights) {
+  // POV-Ray 3.7 traces radiosity's gather rays without area lights (radiosity.cpp clears Q_AREA_LIGHT).
+  // A 2 x 2 area light tests its 4 corners from a camera hit, 1 ray from a gather hit, a point light 1 from
+  // both: so the pretrace's rays with the area light exceed those with the point light by at most 3 per
+  // pretrace camera ray (81 per pass on a 9 x 9 image), however many gather rays hit the scene.
+  scene::Scene s = sphere_under_white_sky(1);
+  s.background.rgb = Color(0.2);
+  s.settings.radiosity->count = 400;
+  s.objects.push_back(
+      test::object(std::make_shared<geometry::Plane>(Vec3(0, 1, 0), -1.0), test::texture({Color(0.8)})));
+  scene::Light point = test::point_light({3, 5, -4});
+  scene::Light area = point;
+  area.area = true;
+  area.axis1 = {0.5, 0, 0};
+  area.axis2 = {0, 0, 0.5};
+  area.size1 = area.size2 = 2;
+  scene::Scene with_point = s, with_area = s;
+  with_point.lights.push_back(point);
+  with_area.lights.push_back(area);
+  const auto [passes, point_rays] = pretrace_counts(render_small(with_point, 1));
+  const auto [area_passes, area_rays] = pretrace_counts(render_small(with_area, 1));
+  ASSERT_EQ(passes, area_passes);
+  ASSERT_GT(point_rays, 10 * 81 * passes);  // the gathers' rays outnumber the camera rays many times
+  EXPECT_GT(area_rays, point_rays);
+  EXPECT_LE(area_rays - point_rays, 3 * 81 * passes);
 }
 
 }  // namespace
