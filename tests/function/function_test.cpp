@@ -151,6 +151,15 @@ TEST(FunctionInternals, NoiseGeneratorPicksPovRaysVariant) {
   EXPECT_NEAR(eval(*noise, {0.3, 0.7, 1.1, 3}), 0.573302353883, 1e-11);
 }
 
+TEST(FunctionInternals, RidgedMultifractalUsesItsNoiseGenerator) {
+  // POV-Ray 3.7.0.10's #debug str(f_ridged_mf(0.1, 0.2, 0.3, H, L, octaves, offset, gain, G), 0, 12), each
+  // the first f_ridged_mf call of its scene: POV-Ray keeps the first call's frequency weights for all later
+  // calls (fnintern.cpp caches them once), which snell does not copy.
+  const auto ridged = internal_function(59);
+  EXPECT_NEAR(eval(*ridged, {0.1, 0.2, 0.3, 0.07, 2.2, 7, 0.6, 0.9, 1}), 0.049560277353, 1e-11);
+  EXPECT_NEAR(eval(*ridged, {0.1, 0.2, 0.3, 0.1, 3.1, 8, 0.7, 0.8, 2}), 0.342919513484, 1e-11);
+}
+
 TEST(FunctionInternals, UnimplementedOnesDeclareButCallsNameThem) {
   const auto ridge = internal_function(58);
   EXPECT_EQ(ridge->arity(), 9u);  // x, y, z + 6

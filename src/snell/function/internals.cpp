@@ -70,12 +70,15 @@ double f_noise3d(const double* a) {  // 76
   return noise01(a[0], a[1], a[2]);
 }
 
+/// A noise generator parameter of an internal function: POV-Ray (vm/fnintern.cpp) keeps its low two bits,
+/// and 0 ("default") takes the original generator's path.
+texture::NoiseGenerator generator_parameter(double value) {
+  const int bits = static_cast<int>(std::clamp(value, -1.0e9, 1.0e9)) & 3;
+  return bits == 0 ? texture::NoiseGenerator::original : static_cast<texture::NoiseGenerator>(bits);
+}
+
 double f_noise_generator(const double* a) {  // 78: the generator number (a[3]) picks POV-Ray's variant
-  // POV-Ray (vm/fnintern.cpp) keeps the low two bits; 0 ("default") takes the original generator's path.
-  const int bits = static_cast<int>(std::clamp(a[3], -1.0e9, 1.0e9)) & 3;
-  const auto generator =
-      bits == 0 ? texture::NoiseGenerator::original : static_cast<texture::NoiseGenerator>(bits);
-  return texture::povray_noise({a[0], a[1], a[2]}, generator);
+  return texture::povray_noise({a[0], a[1], a[2]}, generator_parameter(a[3]));
 }
 
 double f_helix1(const double* a) {  // 25
@@ -113,8 +116,9 @@ double f_ridged_mf(const double* a) {  // 59
   // weighted by the previous octave's value times gain (clamped to [0, 1]) and by frequency^-H.
   const double h = a[3], lacunarity = a[4], offset = a[6], gain = a[7];
   const int octaves = static_cast<int>(std::clamp(a[5], 0.0, 64.0));
+  const texture::NoiseGenerator generator = generator_parameter(a[8]);
   const auto ridge = [&](double x, double y, double z) {
-    const double r = offset - std::fabs(2 * noise01(x, y, z) - 1);
+    const double r = offset - std::fabs(2 * texture::povray_noise({x, y, z}, generator) - 1);
     return r * r;
   };
   double x = a[0], y = a[1], z = a[2];
