@@ -25,6 +25,8 @@ struct TraceContext {
   /// The camera ray's shutter time: every ray it spawns (shadow, reflected, refracted) sees the scene then.
   double time = 0;
   RayCounters counters;
+  /// Pixels this thread supersampled (summed after the render: a shared counter bounced between cores).
+  uint64_t supersampled_pixels = 0;
   /// Null in normal renders; set by `snell explain` and the AOV layers to watch the rays
   /// (trace_observer.hpp).
   TraceObserver* observer = nullptr;

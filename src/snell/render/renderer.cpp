@@ -161,7 +161,6 @@ RenderStats Renderer::render_into(io::Image& image) const {
   RenderStats stats;
   tbb::enumerable_thread_specific<TraceContext> contexts;
   std::atomic<size_t> tiles_done{0};
-  std::atomic<uint64_t> supersampled{0};
   std::atomic<bool> stopped{false};
   std::mutex progress_mutex;
   const size_t total_tiles = tiles.size();
@@ -270,7 +269,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
     const Color c = first(x, y);
     const bool differs = differs_from_neighbour(x, y, w, h, options_.aa_threshold, encoded);
     if (!differs) return c;
-    ++supersampled;
+    ++ctx.supersampled_pixels;
     const int n = options_.aa_depth;
     Color sum = c;
     for (int k = 1; k <= n * n; ++k) {
@@ -356,8 +355,10 @@ RenderStats Renderer::render_into(io::Image& image) const {
     run_all();
   }
 
-  for (const TraceContext& ctx : contexts) stats.rays += ctx.counters;
-  stats.supersampled_pixels = supersampled;
+  for (const TraceContext& ctx : contexts) {
+    stats.rays += ctx.counters;
+    stats.supersampled_pixels += ctx.supersampled_pixels;
+  }
   stats.tiles_rendered = tiles_done;
   stats.cancelled = stopped;
   stats.integrator_summary = integrator->summary();
