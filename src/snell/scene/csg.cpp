@@ -117,6 +117,21 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
       }
       continue;
     }
+    if (!child.csg && !child.motion) {
+      // A plain shape: the other children decide on the hit point alone, so only the hit kept becomes a
+      // world-space hit (its normals transformed) - most candidates of a difference or intersection are not.
+      thread_local geometry::HitList local;  // used up before the next child's test starts
+      local.clear();
+      child.shape->all_hits(child.transform.inverse_ray(ray), t_min, t_max, local);
+      for (const geometry::LocalHit& l : local) {
+        if (!keeps(i, ray.at(l.t), ray.time)) continue;
+        hit = child.to_world(ray, l);
+        t_max = l.t;
+        found = true;
+        break;  // hits come in increasing t: the first kept one is this child's nearest
+      }
+      continue;
+    }
     hits.clear();
     child.all_hits(ray, t_min, t_max, hits);
     for (const SurfaceHit& h : hits) {
@@ -137,8 +152,18 @@ void Csg::all_hits(const math::Ray& ray, double t_min, double t_max, std::vector
   std::vector<SurfaceHit>& mine = scratch.list();
   for (size_t i = 0; i < surface_children_; ++i) {
     if (!may_hit_child(i, ray, t_min, t_max)) continue;
+    const Object& child = *children_[i];
+    if (!child.csg && !child.motion) {
+      // As in intersect: only the kept hits of a plain shape become world-space hits.
+      thread_local geometry::HitList local;  // used up before the next child's test starts
+      local.clear();
+      child.shape->all_hits(child.transform.inverse_ray(ray), t_min, t_max, local);
+      for (const geometry::LocalHit& l : local)
+        if (keeps(i, ray.at(l.t), ray.time)) hits.push_back(child.to_world(ray, l));
+      continue;
+    }
     mine.clear();
-    children_[i]->all_hits(ray, t_min, t_max, mine);
+    child.all_hits(ray, t_min, t_max, mine);
     for (const SurfaceHit& h : mine)
       if (keeps(i, h.point, ray.time)) hits.push_back(h);
   }
