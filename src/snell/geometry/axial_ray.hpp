@@ -34,6 +34,15 @@ struct AxialRay {
   }
   double t_of(double u) const { return (u - f) / length; }
 
+  /// The t interval in which a non-horizontal ray is between heights y_lo and y_hi (a little wider, so
+  /// that a root at the band's edge is never outside it).
+  std::pair<double, double> band_span(double y_lo, double y_hi) const {
+    const double slack = 1e-7 * (1 + std::fabs(y_lo) + std::fabs(y_hi));
+    double u0 = (y_lo - slack - o.y) / dn.y, u1 = (y_hi + slack - o.y) / dn.y;
+    if (u0 > u1) std::swap(u0, u1);
+    return {t_of(u0), t_of(u1)};
+  }
+
   /// Whether a non-horizontal ray stays out of the ring r_min <= r <= r_max while it crosses the height
   /// band [y_lo, y_hi]: its squared distance from the axis, convex in u, is then above r_max^2 or below
   /// r_min^2 there. Lets shapes skip a piece's polynomial (as POV-Ray's per-segment bounding cylinders).

@@ -33,7 +33,7 @@ Bounds3 Lathe::bounds() const {
 }
 
 template <typename F>
-void Lathe::crossings(const Ray& ray, double t_min, double t_max, F&& emit) const {
+void Lathe::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit) const {
   AxialRay axial;
   if (!axial.prepare(ray) || axial.misses_cylinder(radius_)) return;
   const Vec3 o = axial.o, dn = axial.dn;
@@ -57,21 +57,46 @@ void Lathe::crossings(const Ray& ray, double t_min, double t_max, F&& emit) cons
     }
   };
   const bool horizontal = std::fabs(dn.y) < 1e-9;
-  for (size_t i = 0; i < profile_.pieces().size(); ++i) {
-    const CurveSegment& piece = profile_.pieces()[i];
-    const Cubic r{piece.d.u, piece.c.u, piece.b.u, piece.a.u};
-    const Cubic y{piece.d.v - o.y, piece.c.v, piece.b.v, piece.a.v};  // height above the ray's origin
-    std::array<double, 6> roots{};
-    if (horizontal) {
+  const auto& pieces = profile_.pieces();
+  if (horizontal) {
+    for (size_t i = 0; i < pieces.size(); ++i) {
+      const CurveSegment& piece = pieces[i];
       const double slack = 1e-9 * (1 + std::fabs(o.y));
       if (o.y < piece.lo.v - slack || o.y > piece.hi.v + slack) continue;
-      const int n = real_roots(y, -kJointSlack, 1.0 + kJointSlack, std::span<double>(roots.data(), 3));
+      const Cubic r{piece.d.u, piece.c.u, piece.b.u, piece.a.u};
+      const Cubic y{piece.d.v - o.y, piece.c.v, piece.b.v, piece.a.v};
+      std::array<double, 3> roots{};
+      const int n = real_roots(y, -kJointSlack, 1.0 + kJointSlack, std::span<double>(roots));
       for (int k = 0; k < n; ++k) radial_solutions(evaluate_polynomial(r, roots[k]), 0, true, i, roots[k]);
-      continue;
     }
+    return;
+  }
+  // The pieces whose height band the ray crosses within (t_min, t_max) near its ring, nearest band first:
+  // once a band starts beyond t_max (which a nearest-hit caller lowers as it finds hits) no later piece
+  // can hold a nearer root, and its sextic is never solved (as POV-Ray's per-segment bounding cylinders).
+  struct Band {
+    double t0;
+    size_t piece;
+  };
+  thread_local std::vector<Band> bands;
+  bands.clear();
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const CurveSegment& piece = pieces[i];
+    const auto [t0, t1] = axial.band_span(piece.lo.v, piece.hi.v);
+    if (t1 <= t_min || t0 >= t_max) continue;
     const double r_max = std::max(std::fabs(piece.lo.u), std::fabs(piece.hi.u));
     const double r_min = piece.lo.u > 0 ? piece.lo.u : piece.hi.u < 0 ? -piece.hi.u : 0;
     if (axial.misses_band(piece.lo.v, piece.hi.v, r_min, r_max)) continue;
+    bands.push_back({t0, i});
+  }
+  std::sort(bands.begin(), bands.end(), [](const Band& p, const Band& q) { return p.t0 < q.t0; });
+  for (const Band& band : bands) {
+    if (band.t0 >= t_max) break;
+    const size_t i = band.piece;
+    const CurveSegment& piece = pieces[i];
+    const Cubic r{piece.d.u, piece.c.u, piece.b.u, piece.a.u};
+    const Cubic y{piece.d.v - o.y, piece.c.v, piece.b.v, piece.a.v};  // height above the ray's origin
+    std::array<double, 6> roots{};
     // dn.y^2 r(s)^2 = a Y(s)^2 + b dn.y Y(s) + c dn.y^2, with Y(s) = y(s) - o.y = u dn.y.
     const Sextic r2 = product(r, r), y2 = product(y, y);
     Sextic eq{};
@@ -113,7 +138,7 @@ LocalHit Lathe::make_hit(const Ray& ray, const Crossing& c) const {
 bool Lathe::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
   bool found = false;
   Crossing best{t_max, 0, 0};
-  crossings(ray, t_min, t_max, [&](const Crossing& c) {
+  crossings(ray, t_min, best.t, [&](const Crossing& c) {
     if (c.t < best.t) {
       best = c;
       found = true;

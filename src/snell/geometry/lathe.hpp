@@ -25,7 +25,7 @@ class Lathe final : public Shape {
     double s;
   };
   template <typename F>
-  void crossings(const Ray& ray, double t_min, double t_max, F&& emit) const;
+  void crossings(const Ray& ray, double t_min, const double& t_max, F&& emit) const;
   LocalHit make_hit(const Ray& ray, const Crossing& c) const;
 
   Outline profile_;

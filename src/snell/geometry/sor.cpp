@@ -61,7 +61,7 @@ double Sor::radius_squared(double y) const {
 }
 
 template <typename F>
-void Sor::crossings(const Ray& ray, double t_min, double t_max, F&& emit) const {
+void Sor::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit) const {
   AxialRay axial;
   if (!axial.prepare(ray) || axial.misses_cylinder(radius_)) return;
   const Vec3 o = axial.o, dn = axial.dn;
@@ -94,7 +94,15 @@ void Sor::crossings(const Ray& ray, double t_min, double t_max, F&& emit) const 
     }
     return;
   }
-  for (const Piece& piece : pieces_) {
+  // The pieces climb in y, so the ray meets their height bands in order (reversed when it goes down): once
+  // a band starts beyond t_max, which a nearest-hit caller lowers as it finds hits, no later piece can
+  // hold a nearer root.
+  const size_t count = pieces_.size();
+  for (size_t k = 0; k < count; ++k) {
+    const Piece& piece = pieces_[dn.y > 0 ? k : count - 1 - k];
+    const auto [t0, t1] = axial.band_span(piece.y0, piece.y1);
+    if (t0 >= t_max) break;
+    if (t1 <= t_min) continue;
     if (axial.misses_band(piece.y0, piece.y1, piece.r_min, piece.r_max)) continue;
     // u = (y - o.y) / dn.y = alpha + beta w along the piece.
     const double h = piece.y1 - piece.y0;
@@ -121,7 +129,7 @@ void Sor::crossings(const Ray& ray, double t_min, double t_max, F&& emit) const 
 bool Sor::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
   bool found = false;
   hit.t = t_max;
-  crossings(ray, t_min, t_max, [&](const LocalHit& h) {
+  crossings(ray, t_min, hit.t, [&](const LocalHit& h) {
     if (h.t < hit.t) {
       hit = h;
       found = true;
@@ -131,7 +139,8 @@ bool Sor::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) c
 }
 
 void Sor::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
-  HitList found;
+  thread_local HitList found;  // reused: no allocation per ray (crossings never re-enters all_hits)
+  found.clear();
   crossings(ray, t_min, t_max, [&](const LocalHit& h) { found.push_back(h); });
   sort_and_drop_joint_duplicates(found, [](const LocalHit& h) { return static_cast<long>(h.part); });
   hits.insert(hits.end(), found.begin(), found.end());

@@ -34,7 +34,7 @@ class Sor final : public Shape {
   };
   const Piece& piece_at(double y) const;
   template <typename F>
-  void crossings(const Ray& ray, double t_min, double t_max, F&& emit) const;
+  void crossings(const Ray& ray, double t_min, const double& t_max, F&& emit) const;
 
   std::vector<Piece> pieces_;
   double radius_ = 0;
