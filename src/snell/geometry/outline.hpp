@@ -47,6 +47,11 @@ class Outline {
 
   /// Calls f(piece index, s) for every crossing of the line n . q + k = 0 with a piece, s in [0, 1] (with
   /// kJointSlack: a crossing at a joint may come twice).
+  /// The crossings of piece `i` with the line n . q + k = 0 into `roots` (at most 3); their count.
+  int piece_crossings(size_t i, Vec2 n, double k, double* roots) const {
+    return crossings(pieces_[i], n, k, roots);
+  }
+
   template <typename F>
   void for_each_crossing(Vec2 n, double k, F&& f) const {
     double roots[3];

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "snell/math/constants.hpp"
+
 namespace snell::geometry {
 
 Prism::Prism(Outline outline, double height1, double height2, Sweep sweep, bool open, bool outline_in_xy)
@@ -29,7 +31,7 @@ Bounds3 Prism::bounds() const {
 }
 
 template <typename F>
-void Prism::crossings(const Ray& local, double t_min, double t_max, F&& emit) const {
+void Prism::crossings(const Ray& local, double t_min, const double& t_max, F&& emit) const {
   const Vec3 o = local.origin, d = local.direction;
   const auto accept = [&](double t, int piece, double s) {
     if (t > t_min && t < t_max) emit(Crossing{t, piece, s});
@@ -60,7 +62,7 @@ void Prism::crossings(const Ray& local, double t_min, double t_max, F&& emit) co
   if (!(norm > 0)) return;  // parallel to the walls
   n = {n.u / norm, n.v / norm};
   k /= norm;
-  outline_.for_each_crossing(n, k, [&](size_t piece, double s) {
+  const auto wall = [&](size_t piece, double s) {
     const Vec2 q = outline_.pieces()[piece].at(s);
     double t;
     if (sweep_ == Sweep::linear) {
@@ -72,7 +74,50 @@ void Prism::crossings(const Ray& local, double t_min, double t_max, F&& emit) co
     }
     const double y = o.y + t * d.y;
     if (y >= h1_ && y <= h2_) accept(t, static_cast<int>(piece), s);
-  });
+  };
+  const auto& pieces = outline_.pieces();
+  const double across = d.x * d.x + d.z * d.z;
+  if (sweep_ != Sweep::linear || !(across > 0)) {
+    outline_.for_each_crossing(n, k, wall);
+    return;
+  }
+  // A linear sweep's wall point at t lies over (o.x, o.z) + t (d.x, d.z): a piece's box bounds the t of its
+  // crossings from below. Pieces are solved nearest box first, and not at all once their box lies beyond
+  // t_max, which a nearest-hit caller lowers as it finds hits.
+  struct Near {
+    double t0;
+    size_t piece;
+  };
+  thread_local std::vector<Near> order;  // used up before any other prism's test on this thread
+  order.clear();
+  // Walls stand between the heights h1 and h2: only that stretch of the ray can cross them.
+  double t_low = t_min, t_high = math::kInfinity;
+  if (d.y != 0) {
+    const double ta = (h1_ - o.y) / d.y, tb = (h2_ - o.y) / d.y;
+    const double slack = 1e-9 * (1 + std::fabs(ta) + std::fabs(tb));
+    t_low = std::max(t_low, std::min(ta, tb) - slack);
+    t_high = std::max(ta, tb) + slack;
+  } else if (o.y < h1_ || o.y > h2_) {
+    return;
+  }
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const CurveSegment& p = pieces[i];
+    if (!p.line_may_cross(n, k)) continue;
+    const double a0 = (p.lo.u - o.x) * d.x, a1 = (p.hi.u - o.x) * d.x;
+    const double b0 = (p.lo.v - o.z) * d.z, b1 = (p.hi.v - o.z) * d.z;
+    const double t0 = (std::min(a0, a1) + std::min(b0, b1)) / across;
+    const double t1 = (std::max(a0, a1) + std::max(b0, b1)) / across;
+    const double slack = 1e-9 * (1 + std::fabs(t0) + std::fabs(t1));
+    if (t1 + slack <= t_low || t0 - slack >= t_high) continue;
+    order.push_back({t0 - slack, i});
+  }
+  std::sort(order.begin(), order.end(), [](const Near& a, const Near& b) { return a.t0 < b.t0; });
+  double roots[3];
+  for (const Near& near : order) {
+    if (near.t0 >= t_max) break;
+    const int count = outline_.piece_crossings(near.piece, n, k, roots);
+    for (int r = 0; r < count; ++r) wall(near.piece, roots[r]);
+  }
 }
 
 LocalHit Prism::make_hit(const Ray& local, const Crossing& c) const {
@@ -107,7 +152,7 @@ bool Prism::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit)
   const Ray local{to_local(ray.origin), to_local(ray.direction), ray.time};
   bool found = false;
   Crossing best{t_max, 0, 0};
-  crossings(local, t_min, t_max, [&](const Crossing& c) {
+  crossings(local, t_min, best.t, [&](const Crossing& c) {
     if (c.t < best.t) {
       best = c;
       found = true;
@@ -119,7 +164,8 @@ bool Prism::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit)
 
 void Prism::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
   const Ray local{to_local(ray.origin), to_local(ray.direction), ray.time};
-  std::vector<Crossing> found;
+  thread_local std::vector<Crossing> found;  // reused: no allocation per ray
+  found.clear();
   crossings(local, t_min, t_max, [&](const Crossing& c) { found.push_back(c); });
   sort_and_drop_joint_duplicates(found, [](const Crossing& c) { return c.piece; });
   for (const Crossing& c : found) hits.push_back(make_hit(local, c));

@@ -30,7 +30,7 @@ class Prism final : public Shape {
     double s;
   };
   template <typename F>
-  void crossings(const Ray& local, double t_min, double t_max, F&& emit) const;
+  void crossings(const Ray& local, double t_min, const double& t_max, F&& emit) const;
   LocalHit make_hit(const Ray& local, const Crossing& c) const;
   bool inside_local(const Vec3& p) const;
   /// Swaps y and z for text; the identity for prisms. Its own inverse.
