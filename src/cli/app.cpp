@@ -226,7 +226,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   const auto t_build = Clock::now();
   const auto accelerator = build_accelerator(o.accel, scene);
   const double build_s = seconds_since(t_build);
-  accel::ObjectTestCounter::enabled = o.stats;  // tests per ray for --stats; a shared counter, so only then
+  accel::ObjectTestCounter::enabled = o.stats;  // tests per ray for --stats
 
   render::RenderOptions ro;
   ro.width = o.width;
@@ -322,7 +322,7 @@ int render_frame(CliOptions o, const FramePlan& plan, const PixelBounds& bounds,
   }
   if (o.stats) {
     const accel::AcceleratorStats a = accelerator->stats();
-    const double tests = static_cast<double>(accel::ObjectTestCounter::tests.load());
+    const double tests = static_cast<double>(accel::ObjectTestCounter::total());
     fmt::print(
         stderr,
         "  accel: {} objects ({} unbounded), {} nodes, {:.1f} KiB, built in {:.3f}s, {:.2f} object tests per "

@@ -42,14 +42,14 @@ std::vector<math::Ray> rays_at_layer(int n) {
 
 /// Mean object tests per ray of `a` over `rays`.
 double tests_per_ray(const accel::Accelerator& a, const std::vector<math::Ray>& rays) {
-  accel::ObjectTestCounter::tests = 0;
+  accel::ObjectTestCounter::reset();
   accel::ObjectTestCounter::enabled = true;
   for (const math::Ray& ray : rays) {
     scene::SurfaceHit hit;
     a.intersect(ray, 1e-6, math::kInfinity, RayKind::camera, hit);
   }
   accel::ObjectTestCounter::enabled = false;
-  return static_cast<double>(accel::ObjectTestCounter::tests.load()) / static_cast<double>(rays.size());
+  return static_cast<double>(accel::ObjectTestCounter::total()) / static_cast<double>(rays.size());
 }
 
 class FlatLayerTest : public testing::TestWithParam<std::string> {};
