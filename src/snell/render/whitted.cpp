@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "snell/accel/indexed_objects.hpp"
 #include "snell/geometry/mesh.hpp"
@@ -592,8 +593,8 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   // Any opaque blocker makes the light black, whatever else lies on the way, so the last one this light
   // met is tried alone before the whole scene. (Not while an observer records the blockers in order.)
   const scene::Object** cached = cached_blocker(source, context);
+  scene::SurfaceHit hit;  // filled by each test that finds one
   if (cached && *cached) {
-    scene::SurfaceHit hit;
     if (accel::test_object(**cached, {origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit) &&
         opaque_at(hit))
       return Color(0);
@@ -601,11 +602,12 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   // Media inside the solids crossed thin the light whatever the light's media flags (POV-Ray 3.7 trace.cpp,
   // ComputeShadowColour; those flags govern the atmosphere only).
   const bool thinned_by_media = has_interior_media_;
-  ShadowMedia media({point, dir, context.time});
+  // Built only for scenes with interior media: it is a few hundred bytes to clear for every shadow ray.
+  std::optional<ShadowMedia> media;
+  if (thinned_by_media) media.emplace(math::Ray{point, dir, context.time});
   // Pass through transparent blockers, tinting by each one's transmitted colour (trace.cpp,
   // TracePointLightShadowRay / ComputeShadowColour). Bounded so that coincident surfaces cannot loop.
   for (int crossings = 0; crossings < 64 && remaining > 0; ++crossings) {
-    scene::SurfaceHit hit;
     if (!accel_.intersect({origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit)) break;
     // A texture that never transmits stops the ray without its pigment being evaluated (an observer wants
     // the colour). Rgbft{} is opaque black.
@@ -621,14 +623,13 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     light *= transmitted_color(c);
     if (max_abs(light) < scene_.settings.adc_bailout) return Color(0);
     const scene::Object& solid = hit.solid ? *hit.solid : *hit.object;
-    if (thinned_by_media && ShadowMedia::has_media(solid))
-      media.cross(solid, dot(hit.point - point, dir), hit.normal);
+    if (media && ShadowMedia::has_media(solid)) media->cross(solid, dot(hit.point - point, dir), hit.normal);
     const Vec3 side = dot(hit.normal, dir) >= 0 ? hit.normal : -hit.normal;
     const Vec3 next = offset_origin(hit.point, side);
     remaining -= dot(next - origin, dir);
     origin = next;
   }
-  return thinned_by_media ? light * media.transmittance(distance) : light;
+  return media ? light * media->transmittance(distance) : light;
 }
 
 }  // namespace snell::render
