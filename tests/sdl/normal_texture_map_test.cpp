@@ -113,6 +113,51 @@ TEST(SdlTextureMap, TilesWithTile2IsACheckerOfTextures) {
   EXPECT_NEAR(t.pigment_at({1.5, 0.5, 0.5}, {0, 1, 0}, {}).rgb.r, 1.0, 1e-12);
 }
 
+TEST(SdlPatterns, SlopeWithAltitudeWrapsAndUsesTheUnitAltitude) {
+  // POV-Ray 3.7 (pattern.cpp slope_pattern, parstxtr.cpp): weights 0.8/2.8 and 2/2.8 from the vectors'
+  // lengths, the height measured along the unit altitude direction, the blend wrapped into [0,1).
+  const scene::Scene s = sdl::test::parse("plane { z, 0 pigment { slope { -z * 0.8 altitude z * 2 } } }");
+  const material::Texture& t = texture_of(s);
+  const math::Vec3 up{0, 0, 1}, down_ray{0, 0, -1};
+  // Facing +z: asin(-1) -> slope 0; at height 0.9: 0.9 * 2/2.8 (the unnormalised 1.8 * 2/2.8 wraps to 0.29).
+  EXPECT_NEAR(t.pigment_at({0, 0, 0.9}, up, {}, down_ray).rgb.r, 0.9 * 2 / 2.8, 1e-9);
+  // Below zero the blend wraps to the top of the map: height -0.18 gives -0.1286 -> 0.8714.
+  EXPECT_NEAR(t.pigment_at({0, 0, -0.18}, up, {}, down_ray).rgb.r, 1 - 0.18 * 2 / 2.8, 1e-9);
+}
+
+TEST(SdlPatterns, SlopeTakesTheNormalTurnedToTheRay) {
+  // POV-Ray evaluates slope with the normal that faces the ray (trace.cpp sets PNormal after the flip):
+  // a surface whose normal points down but is seen from above slopes as if it faced up.
+  const scene::Scene s = sdl::test::parse("plane { z, 0 pigment { slope z } }");
+  const material::Texture& t = texture_of(s);
+  EXPECT_NEAR(t.pigment_at({0, 0, 0}, {0, 0, -1}, {}, {0, 0, -1}).rgb.r, 1.0, 1e-6);
+  EXPECT_NEAR(t.pigment_at({0, 0, 0}, {0, 0, -1}, {}, {0, 0, 1}).rgb.r, 0.0, 1e-6);
+}
+
+TEST(SdlTextureMap, SlopeMapPicksFinishAndLightsEachEntry) {
+  // A slope map needs the normal for its finish as for its colour: facing up the second entry's finish.
+  const scene::Scene s = sdl::test::parse(R"(
+    plane { z, 0 texture { slope z texture_map {
+      [0.0 pigment { rgb 1 } finish { diffuse 0.1 }] [0.5 pigment { rgb 1 } finish { diffuse 0.1 }]
+      [0.5 pigment { rgb 1 } finish { diffuse 0.9 }] [1.0 pigment { rgb 1 } finish { diffuse 0.9 }] } } })");
+  const material::Texture& t = texture_of(s);
+  const math::Vec3 up{0, 0, 1};
+  EXPECT_DOUBLE_EQ(t.finish_at({0, 0, 0}, up, {0, 0, -1}).diffuse, 0.9);
+  EXPECT_DOUBLE_EQ(t.finish_at({0, 0, 0}, -up, {0, 0, 1}).diffuse, 0.1);
+  // Between two entries each comes with its own finish and weight, to be lit on its own.
+  const scene::Scene g = sdl::test::parse(R"(
+    plane { z, 0 texture { gradient x texture_map {
+      [0 pigment { rgb 1 } finish { diffuse 0.2 }] [1 pigment { rgb 0 } finish { diffuse 0.8 }] } } })");
+  material::Texture::MapEntry entries[2];
+  ASSERT_TRUE(texture_of(g).map_entries_at({0.25, 0, 0}, up, up, {}, {0, 0, -1}, entries));
+  EXPECT_DOUBLE_EQ(entries[0].finish->diffuse, 0.2);
+  EXPECT_DOUBLE_EQ(entries[1].finish->diffuse, 0.8);
+  EXPECT_NEAR(entries[0].weight, 0.75, 1e-12);
+  EXPECT_NEAR(entries[1].weight, 0.25, 1e-12);
+  EXPECT_NEAR(entries[0].pigment.rgb.r, 1, 1e-12);
+  EXPECT_NEAR(entries[1].pigment.rgb.r, 0, 1e-12);
+}
+
 TEST(SdlPatterns, SlopeFollowsTheSurfaceNormal) {
   // slope y: asin(n . y) from [-pi/2, pi/2] onto [0, 1]: facing up ~1, sideways 0.5, 30 degrees up 2/3.
   const scene::Scene s = sdl::test::parse("sphere { 0, 1 pigment { slope y } }");

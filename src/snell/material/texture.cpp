@@ -94,13 +94,37 @@ math::Vec3 Texture::own_shading_normal(const math::Vec3& world_point, const math
   return dot(bent, bent) > 0 ? normalize(bent) : world_normal;
 }
 
-const Finish& Texture::finish_at(const math::Vec3& world_point) const {
+const Finish& Texture::finish_at(const math::Vec3& world_point, const math::Vec3& world_normal,
+                                 const math::Vec3& ray_direction) const {
   if (!selector) return finish;
-  PatternPoint pp;
-  pp.p = transform.inverse_point(world_point);
+  // The same pattern point as the pigment's, normal and ray included: a slope map must pick its finish
+  // where it picks its colour.
+  const PatternPoint pp = layer_point(*this, world_point, world_normal, {}, ray_direction);
   const TextureSelector::Choice c = selector->at(pp);
   const Texture* dominant = c.second && c.weight > 0.5 ? c.second : c.first;
-  return dominant->finish_at(pp.p);
+  return dominant->finish_at(pp.p, world_normal, ray_direction);
+}
+
+bool Texture::map_entries_at(const math::Vec3& world_point, const math::Vec3& world_normal,
+                             const math::Vec3& facing_normal, const math::Vec2& uv,
+                             const math::Vec3& ray_direction, MapEntry (&out)[2]) const {
+  if (!selector) return false;
+  const PatternPoint pp = layer_point(*this, world_point, world_normal, uv, ray_direction);
+  const TextureSelector::Choice c = selector->at(pp);
+  if (!c.second) return false;
+  // The entries live in the mapped texture's space: bend the normal there and bring it back.
+  const math::Vec3 local = normalize(transform.inverse_normal(facing_normal));
+  const Texture* entries[2] = {c.first, c.second};
+  const double weights[2] = {1 - c.weight, c.weight};
+  for (int i = 0; i < 2; ++i) {
+    const Texture& e = *entries[i];
+    out[i].pigment = e.pigment_at(pp.p, world_normal, uv, ray_direction);
+    out[i].finish = &e.finish_at(pp.p, world_normal, ray_direction);
+    const math::Vec3 bent = transform.normal(e.shading_normal(pp.p, local, uv));
+    out[i].normal = dot(bent, bent) > 0 ? normalize(bent) : facing_normal;
+    out[i].weight = weights[i];
+  }
+  return true;
 }
 
 bool Texture::may_transmit() const {

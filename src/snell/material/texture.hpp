@@ -78,8 +78,25 @@ struct Texture {
                                 const math::Vec2& uv) const;
 
   /// The finish at a world point: this layer's own, or for a texture map the finish of the entry that
-  /// weighs most there (finishes are not blended).
-  const Finish& finish_at(const math::Vec3& world_point) const;
+  /// weighs most there (finishes are not blended). Patterns that read the surface (`slope`, `aoi`) need
+  /// `world_normal` (unit, as the pigment gets it) and `ray_direction`; zero where there are none.
+  const Finish& finish_at(const math::Vec3& world_point, const math::Vec3& world_normal = {},
+                          const math::Vec3& ray_direction = {}) const;
+
+  /// One entry of a texture map as POV-Ray lights it on its own before blending the lit colours
+  /// (trace.cpp, ComputeTextureColour): its pigment, its finish and the normal it bends (world space).
+  struct MapEntry {
+    Rgbft pigment;
+    const Finish* finish = nullptr;
+    math::Vec3 normal;
+    double weight = 0;
+  };
+  /// For a texture map whose point falls between two entries: both of them into `out` and true; false
+  /// for any other texture or a point one entry covers (then the blended values above are exact).
+  /// `world_normal` is the hit's, `facing_normal` the one turned to the ray that the bumps bend.
+  bool map_entries_at(const math::Vec3& world_point, const math::Vec3& world_normal,
+                      const math::Vec3& facing_normal, const math::Vec2& uv, const math::Vec3& ray_direction,
+                      MapEntry (&out)[2]) const;
 
   /// POV-Ray's default texture: black pigment, default finish.
   static std::shared_ptr<const Texture> default_texture();

@@ -21,7 +21,7 @@ math::Color WhittedIntegrator::lower_layers(const ShadingPoint& top, const math:
     const double trans = std::min(1.0, std::fabs(filter.grey()));
     if (trans <= scene_.settings.adc_bailout) break;
     ShadingPoint sp = top;
-    sp.finish = &layer->finish_at(hit.texture_point);
+    sp.finish = &layer->finish_at(hit.texture_point, hit.normal, top.ray->direction);
     sp.normal = layer->own_shading_normal(hit.texture_point, shape_normal, hit.uv);
     sp.pigment = layer->own_pigment_at(hit.texture_point, hit.normal, hit.uv, top.ray->direction);
     sp.opacity = opacity_of(sp.pigment, scene_.settings.language_version);

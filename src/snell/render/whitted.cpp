@@ -211,7 +211,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
   sp.ray = &ray;
   sp.hit = &hit;
   sp.texture = &texture;
-  sp.finish = &texture.finish_at(hit.texture_point);
+  sp.finish = &texture.finish_at(hit.texture_point, hit.normal, ray.direction);
   sp.point = hit.point;
   sp.raw_normal = hit.normal;
   Vec3 shape_normal = hit.shading_normal;
@@ -247,7 +247,7 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
 
   double reflect_weight = weight;
   const Color reflectivity = reflectivity_of(sp, relative_ior, reflect_weight);
-  Color result = own_light(sp, object, relative_ior, level, weight, inside, context);
+  Color result = lit_entries(sp, shape_normal, object, relative_ior, level, weight, inside, context);
 
   // Light through the surface (trace.cpp: filCol, trans).
   Color filter = transmitted_color(pc);
@@ -358,6 +358,29 @@ Color WhittedIntegrator::reflectivity_of(const ShadingPoint& sp, double relative
   }
   if (f.reflection_metallic > 0) reflectivity *= metallic_tint(f.reflection_metallic, sp.pigment.rgb, cos_i);
   return reflectivity;
+}
+
+Color WhittedIntegrator::lit_entries(const ShadingPoint& sp, const Vec3& shape_normal,
+                                     const scene::Object* object, double relative_ior, int level,
+                                     double weight, const InteriorStack& inside,
+                                     TraceContext& context) const {
+  // A point between two entries of a texture map: POV-Ray lights each entry with its own pigment, normal
+  // and finish and blends the lit colours (trace.cpp, ComputeTextureColour); one blended pigment under
+  // the heavier entry's finish lit grass like sand where a slope map fades one into the other.
+  material::Texture::MapEntry entries[2];
+  if (!sp.texture->map_entries_at(sp.hit->texture_point, sp.hit->normal, shape_normal, sp.hit->uv,
+                                  sp.ray->direction, entries))
+    return own_light(sp, object, relative_ior, level, weight, inside, context);
+  Color result(0);
+  for (const material::Texture::MapEntry& e : entries) {
+    ShadingPoint entry = sp;
+    entry.pigment = e.pigment;
+    entry.finish = e.finish;
+    entry.normal = e.normal;
+    entry.opacity = opacity_of(e.pigment, scene_.settings.language_version);
+    result += e.weight * own_light(entry, object, relative_ior, level, weight * e.weight, inside, context);
+  }
+  return result;
 }
 
 Color WhittedIntegrator::own_light(const ShadingPoint& sp, const scene::Object* object, double relative_ior,

@@ -50,6 +50,10 @@ class WhittedIntegrator final : public Integrator {
   /// `weight` by the most it can reflect.
   math::Color reflectivity_of(const ShadingPoint& sp, double relative_ior, double& weight) const;
   /// The surface's own light towards the eye: emission, ambient or radiosity, the light sources.
+  /// own_light, or for a point between two texture map entries their own lights blended.
+  math::Color lit_entries(const ShadingPoint& sp, const math::Vec3& shape_normal, const scene::Object* object,
+                          double relative_ior, int level, double weight, const InteriorStack& inside,
+                          TraceContext& context) const;
   math::Color own_light(const ShadingPoint& sp, const scene::Object* object, double relative_ior, int level,
                         double weight, const InteriorStack& inside, TraceContext& context) const;
   /// Layers under the top one of a layered texture, each lit with its own finish and normal and seen

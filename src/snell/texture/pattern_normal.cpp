@@ -10,9 +10,12 @@ namespace snell::texture {
 namespace {
 
 /// Corners of a regular tetrahedron on the unit sphere; their outer products sum to 4/3 times the identity,
-/// so sum_i f(q + h v_i) v_i = (4/3) h grad f + O(h^2).
-const Vec3 kTetrahedron[4] = {Vec3{1, 1, 1} * 0.57735026918962576, Vec3{1, -1, -1} * 0.57735026918962576,
-                              Vec3{-1, 1, -1} * 0.57735026918962576, Vec3{-1, -1, 1} * 0.57735026918962576};
+/// so sum_i f(q + h v_i) v_i = (4/3) h grad f + O(h^2). Oriented as POV-Ray's (normal.cpp, Pyramid_Vect:
+/// one corner on +y, one in the x-y plane): the O(h^2) error depends on the orientation, and with patterns
+/// as fine as the accuracy (granite at scale 0.1) another orientation gives visibly other bumps.
+const Vec3 kTetrahedron[4] = {Vec3{0.94280904158206337, -1.0 / 3, 0},
+                              Vec3{-0.47140452079103168, -1.0 / 3, 0.81649658092772604},
+                              Vec3{-0.47140452079103168, -1.0 / 3, -0.81649658092772604}, Vec3{0, 1, 0}};
 
 /// POV-Ray scales the gradient bending by 5 * 0.02 per unit bump_size (normal.cpp's "fudge factor"), so
 /// that `bump_size` means the same for every pattern; with the tetrahedron's 4/3 this is 0.1333 grad.

@@ -22,12 +22,12 @@ class SlopePattern final : public ValuePattern {
   /// Without a normal there is no slope: 0.
   double value(const Vec3&) const override { return 0; }
   /// asin(n . d) mapped from [-pi/2, pi/2] to [0, 1] (1 facing `direction`, 0.5 sideways), then blended
-  /// with the altitude by the two vectors' lengths.
+  /// with the height along the unit altitude direction by the two vectors' lengths, wrapped into [0, 1).
   double value_at(const Vec3& p, const Vec3& world_normal, const Vec3& ray_direction) const override;
 
  private:
   SlopeParams params_;
-  Vec3 unit_direction_;
+  Vec3 unit_direction_, unit_altitude_;
   double slope_weight_ = 1, altitude_weight_ = 0;
 };
 
