@@ -1,6 +1,8 @@
 #include "snell/function/algebraic_surfaces.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace snell::function::surfaces {
 
@@ -169,6 +171,109 @@ double umbrella(const double* a) {
 double witch_of_agnesi(const double* a) {
   const Point p(a);
   return field(a[3], -(a[4] * (p.y - 1) + (p.xx + p.zz) * p.y));
+}
+
+// Cushion: z^2 x^2 - z^4 - 2 z x^2 + 2 z^3 + x^2 - z^2 - (x^2 - z)^2 - y^4 - 2 x^2 y^2 - y^2 z^2 + 2 y^2 z +
+// y^2 = 0 (positive inside as written; functions.inc's f_odd is the same quartic).
+double cushion(const double* a) {
+  const Point p(a);
+  const double lift = p.xx - p.z;
+  const double value = p.zz * p.xx - p.zz * p.zz - 2 * p.z * p.xx + 2 * p.zz * p.z + p.xx - p.zz -
+                       lift * lift - p.yy * p.yy - 2 * p.xx * p.yy - p.yy * p.zz + 2 * p.yy * p.z + p.yy;
+  return field(a[3], value);
+}
+
+// Folium surface swept round x: (y^2 + z^2)(1 + (c - 4 a) x) + x^2 (1 + c) = 0, a the neck width, c the
+// divergence.
+double folium_surface(const double* a) {
+  const Point p(a);
+  return field(a[3], (p.yy + p.zz) * (1 + (a[5] - 4 * a[4]) * p.x) + p.xx * (1 + a[5]));
+}
+
+// Hyperbolic torus: the torus quartic with z^2 counted negative, R major and r minor radius.
+double hyperbolic_torus(const double* a) {
+  const Point p(a);
+  const double big = a[4] * a[4], small = a[5] * a[5];
+  const double quartic = p.xx * p.xx + 2 * p.xx * p.yy - 2 * p.xx * p.zz - 2 * (big + small) * p.xx +
+                         p.yy * p.yy - 2 * p.yy * p.zz + 2 * (big - small) * p.yy + p.zz * p.zz +
+                         2 * (big + small) * p.zz + (big - small) * (big - small);
+  return field(a[3], -quartic);
+}
+
+// Kampyle of Eudoxus swept round x: y^2 + z^2 = c^2 x^4 - c^2 d^2 x^2, d the dimple, c the closeness.
+double kampyle_of_eudoxus(const double* a) {
+  const Point p(a);
+  const double c2 = a[5] * a[5];
+  return field(a[3], c2 * p.xx * p.xx - c2 * a[4] * a[4] * p.xx - (p.yy + p.zz));
+}
+
+// Kummer surface with parameters: x^4 + y^4 + z^4 + a (x^2 + y^2 + z^2) + b (x^2 y^2 + x^2 z^2 + y^2 z^2)
+// + c x y z = 1.
+double kummer_surface_v2(const double* a) {
+  const Point p(a);
+  const double value = p.xx * p.xx + p.yy * p.yy + p.zz * p.zz + a[4] * p.r2() +
+                       a[5] * (p.xx * p.yy + p.xx * p.zz + p.yy * p.zz) + a[6] * p.x * p.y * p.z - 1;
+  return field(a[3], -value);
+}
+
+// Lemniscate of Gerono swept round x: x^4 - x^2 + y^2 + z^2 = 0.
+double lemniscate_of_gerono(const double* a) {
+  const Point p(a);
+  return field(a[3], p.xx - p.xx * p.xx - p.yy - p.zz);
+}
+
+// Ovals of Cassini swept round y: (x^2 + y^2 + z^2 + R^2)^2 = t R^2 (x^2 + z^2) + f^2, R the radius,
+// f the filling, t the thickness.
+double ovals_of_cassini(const double* a) {
+  const Point p(a);
+  const double r2 = a[4] * a[4], sum = p.r2() + r2;
+  return field(a[3], a[6] * r2 * (p.xx + p.zz) + a[5] * a[5] - sum * sum);
+}
+
+// Parabolic torus: x^4 + 2 x^2 y^2 - 2 x^2 z - (R^2 + r^2) x^2 + y^4 - 2 y^2 z + (R^2 - r^2) y^2 + z^2
+// + (R^2 + r^2) z + (R^2 - r^2)^2 = 0.
+double parabolic_torus(const double* a) {
+  const Point p(a);
+  const double big = a[4] * a[4], small = a[5] * a[5];
+  const double quartic = p.xx * p.xx + 2 * p.xx * p.yy - 2 * p.xx * p.z - (big + small) * p.xx + p.yy * p.yy -
+                         2 * p.yy * p.z + (big - small) * p.yy + p.zz + (big + small) * p.z +
+                         (big - small) * (big - small);
+  return field(a[3], -quartic);
+}
+
+// Quartic cylinder round y: (x^2 + z^2) y^2 + b^2 (x^2 + z^2) = b^2 d^2, d the diameter, b the bulge.
+double quartic_cylinder(const double* a) {
+  const Point p(a);
+  const double ring = p.xx + p.zz, b2 = a[5] * a[5];
+  return field(a[3], b2 * a[4] * a[4] - ring * p.yy - b2 * ring);
+}
+
+// Strophoid swept round x: (c - x)(y^2 + z^2) = f^2 b x^2 + f^2 x^3, b the size of the bulb, c the
+// sharpness, f the flatness.
+double strophoid(const double* a) {
+  const Point p(a);
+  const double f2 = a[6] * a[6];
+  return field(a[3], f2 * a[4] * p.xx + f2 * p.xx * p.x - (a[5] - p.x) * (p.yy + p.zz));
+}
+
+namespace {
+/// The three Gaussians, each stretched by the eccentricity e along two axes: exp(-s (e x^2 + e y^2 + z^2))...
+std::array<double, 3> stretched_gaussians(const double* a) {
+  const Point p(a);
+  const double e = a[3], s = a[4];
+  return {std::exp(-(p.xx * e + p.yy * e + p.zz) * s), std::exp(-(p.xx * e + p.yy + p.zz * e) * s),
+          std::exp(-(p.xx + p.yy * e + p.zz * e) * s)};
+}
+}  // namespace
+
+double cross_ellipsoids(const double* a) {
+  const auto g = stretched_gaussians(a);
+  return a[6] - std::max({g[0], g[1], g[2]}) * a[5];
+}
+
+double isect_ellipsoids(const double* a) {
+  const auto g = stretched_gaussians(a);
+  return a[6] - std::min({g[0], g[1], g[2]}) * a[5];
 }
 
 }  // namespace snell::function::surfaces
