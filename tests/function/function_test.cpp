@@ -160,14 +160,24 @@ TEST(FunctionInternals, RidgedMultifractalUsesItsNoiseGenerator) {
   EXPECT_NEAR(eval(*ridged, {0.1, 0.2, 0.3, 0.1, 3.1, 8, 0.7, 0.8, 2}), 0.342919513484, 1e-11);
 }
 
+TEST(FunctionInternals, RidgeAndHeteroMultifractalEqualPovRay) {
+  // POV-Ray 3.7.0.10's #debug str(f(x, y, z, ...), 0, 15) with functions.inc, fractional octave counts
+  // included (the last octave weighs its fraction).
+  const auto ridge = internal_function(58), hetero = internal_function(29);
+  EXPECT_NEAR(eval(*ridge, {0.3, -0.2, 0.5, 2.1, 4.5, 0.6, 0.3, 0.4, 2}), -0.160842377663678, 1e-13);
+  EXPECT_NEAR(eval(*ridge, {12.5, 3.25, -7.75, 2, 3, 0.5, 0.7, 0.55, 1}), -0.067650493897843, 1e-13);
+  EXPECT_NEAR(eval(*hetero, {1.71, 0.43, -2.26, 0.5, 2.2, 5.5, 0.3, 1, 2}), 0.246100236279077, 1e-13);
+  EXPECT_NEAR(eval(*hetero, {12.5, 3.25, -7.75, 0.7, 2.0, 4, 0.1, 2, 3}), -0.182728968199747, 1e-13);
+}
+
 TEST(FunctionInternals, UnimplementedOnesDeclareButCallsNameThem) {
-  const auto ridge = internal_function(58);
-  EXPECT_EQ(ridge->arity(), 9u);  // x, y, z + 6
+  const auto spikes = internal_function(62);
+  EXPECT_EQ(spikes->arity(), 8u);  // x, y, z + 5
   try {
-    eval(*ridge, {0, 0, 0, 1, 2, 3, 4, 5, 6});
-    FAIL() << "f_ridge evaluated";
+    eval(*spikes, {0, 0, 0, 1, 2, 3, 4, 5});
+    FAIL() << "f_spikes evaluated";
   } catch (const FunctionError& e) {
-    EXPECT_NE(std::string(e.what()).find("f_ridge"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("f_spikes"), std::string::npos) << e.what();
   }
   EXPECT_THROW(internal_function(79), FunctionError);
   EXPECT_THROW(internal_function(-1), FunctionError);

@@ -134,6 +134,60 @@ double f_ridged_mf(const double* a) {  // 59
   return result;
 }
 
+double f_hetero_mf(const double* a) {  // 29
+  // Musgrave's heterogeneous multifractal (Ebert et al., "Texturing and Modeling", ch. 16; POV-Ray's
+  // parameter order): H, lacunarity, octaves (a fraction adds part of one more), offset, T, noise generator.
+  // Each octave adds (2 noise - 1 + offset) f^-H, multiplied T times by the signal so far (T = 0: plain
+  // fBm, T = 1: heterogeneous).
+  const double h = a[3], lacunarity = a[4], octaves = std::clamp(a[5], 0.0, 64.0), offset = a[6];
+  const int power = static_cast<int>(std::clamp(a[7], 0.0, 64.0));
+  const texture::NoiseGenerator generator = generator_parameter(a[8]);
+  math::Vec3 p{a[0], a[1], a[2]};
+  const auto octave = [&] { return 2 * texture::povray_noise(p, generator) - 1 + offset; };
+  double signal = octave();
+  p = p * lacunarity;
+  const double step = std::pow(lacunarity, -h);
+  double weight = step;
+  for (int i = 1; i < octaves; ++i) {
+    double increment = octave() * weight;
+    for (int k = 0; k < power; ++k) increment *= signal;
+    signal += increment;
+    p = p * lacunarity;
+    weight *= step;
+  }
+  const double part = octaves - std::floor(octaves);
+  if (part != 0) signal += part * octave() * weight * signal;
+  return signal;
+}
+
+double f_ridge(const double* a) {  // 58
+  // Ridged turbulence: lambda, octaves (a fraction weighs one more octave in part), omega, offset, ridge,
+  // noise generator. Each octave is |noise - ridge| normalised by the ridge's larger side, minus the offset,
+  // weighted by omega^i at frequency lambda^i; the sum is divided by the total weight and normalised by the
+  // offset's larger side.
+  const double lambda = a[3], octaves = std::clamp(a[4], 0.0, 64.0), omega = a[5], offset = a[6],
+               ridge = a[7];
+  const texture::NoiseGenerator generator = generator_parameter(a[8]);
+  const math::Vec3 p{a[0], a[1], a[2]};
+  const double ridge_scale = 1 / std::max(ridge, 1 - ridge), offset_scale = 1 / std::max(offset, 1 - offset);
+  const auto crest = [&](double frequency) {
+    return std::fabs(texture::povray_noise(p * frequency, generator) - ridge) * ridge_scale - offset;
+  };
+  const int whole = static_cast<int>(octaves);
+  double value = crest(1), total = 1, frequency = lambda, weight = omega;
+  for (int i = 2; i <= whole; ++i) {
+    value += weight * crest(frequency);
+    total += weight;
+    frequency *= lambda;
+    weight *= omega;
+  }
+  if (const double part = octaves - whole; part != 0) {
+    value += weight * crest(frequency) * part;
+    total += weight * part;
+  }
+  return value * offset_scale / total;
+}
+
 struct Entry {
   const char* name;
   int extra;  // parameters after x, y, z
@@ -171,7 +225,7 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_helix2", 7, nullptr},
     {"f_hex_x", 1, nullptr},
     {"f_hex_y", 1, nullptr},
-    {"f_hetero_mf", 6, nullptr},
+    {"f_hetero_mf", 6, f_hetero_mf},
     {"f_hunt_surface", 1, surfaces::hunt_surface},
     {"f_hyperbolic_torus", 3, surfaces::hyperbolic_torus},
     {"f_isect_ellipsoids", 4, surfaces::isect_ellipsoids},
@@ -200,7 +254,7 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_quartic_saddle", 1, surfaces::quartic_saddle},
     {"f_quartic_cylinder", 3, surfaces::quartic_cylinder},
     {"f_r", 0, f_r},
-    {"f_ridge", 6, nullptr},
+    {"f_ridge", 6, f_ridge},
     {"f_ridged_mf", 6, f_ridged_mf},
     {"f_rounded_box", 4, f_rounded_box},
     {"f_sphere", 1, f_sphere},
