@@ -98,7 +98,7 @@ TEST(SdlFunction, FunctionsIncAndShapesIncParse) {
 
 TEST(SdlFunction, ErrorsAreClear) {
   const std::string inc = "#include \"functions.inc\"\n";
-  EXPECT_NE(test::error_of(inc + "#declare A = f_spikes(0, 0, 0, 1, 2, 3, 4, 5);").find("f_spikes"),
+  EXPECT_NE(test::error_of(inc + "#declare A = f_mesh1(0, 0, 0, 1, 2, 3, 4, 5);").find("f_mesh1"),
             std::string::npos);
   // functions.inc's pattern functions (f_agate is `function { pattern { agate } }`) now evaluate.
   EXPECT_EQ(
