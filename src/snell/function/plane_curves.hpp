@@ -18,6 +18,14 @@ double spikes(const double* a);              // 62: spikiness, hollowness, size,
 double spikes_2d(const double* a);           // 63: height, x frequency, z frequency, rate
 double blob(const double* a);                // 6: separation, inverse size 1, strength 1, inverse size 2...
 double blob2(const double* a);               // 7: separation, inverse size, strength, threshold
-double poly4(const double* a);               // 51: the radius as a quartic in y: c0 .. c4
+double algbr_cyl1(const double* a);    // 0: strength, clamp, sweep, distance, angle (as the other three)
+double algbr_cyl2(const double* a);    // 1
+double algbr_cyl3(const double* a);    // 2
+double algbr_cyl4(const double* a);    // 3
+double flange_cover(const double* a);  // 19: spikiness, hollowness, size, threshold
+double polytubes(const double* a);     // 52: tubes, c0 .. c4 (the tubes' distance from y as a quartic)
+double spiral(const double* a);        // 64: step, thickness, outer radius, (unused), (unused), shape
+double mesh1(const double* a);         // 40: x spacing, z spacing, thickness, amplitude, y scale
+double poly4(const double* a);         // 51: the radius as a quartic in y: c0 .. c4
 
 }  // namespace snell::function::curves
