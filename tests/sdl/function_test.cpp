@@ -98,7 +98,9 @@ TEST(SdlFunction, FunctionsIncAndShapesIncParse) {
 
 TEST(SdlFunction, ErrorsAreClear) {
   const std::string inc = "#include \"functions.inc\"\n";
-  EXPECT_NE(test::error_of(inc + "#declare A = f_enneper(0, 0, 0, 1);").find("f_enneper"), std::string::npos);
+  EXPECT_NE(test::error_of(inc + "#declare F = function { internal(77) } #declare A = F(0, 0, 0);")
+                .find("f_pattern"),
+            std::string::npos);
   // functions.inc's pattern functions (f_agate is `function { pattern { agate } }`) now evaluate.
   EXPECT_EQ(
       test::error_of(inc + "#declare A = f_agate(0.3, 0.2, 0.1);\n#if (A < 0 | A > 1) #error \"range\" #end"),

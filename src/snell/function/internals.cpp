@@ -7,6 +7,7 @@
 
 #include "snell/function/algebraic_surfaces.hpp"
 #include "snell/function/plane_curves.hpp"
+#include "snell/function/special_shapes.hpp"
 #include "snell/math/constants.hpp"
 #include "snell/texture/povray_noise.hpp"
 
@@ -205,27 +206,27 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_bifolia", 2, surfaces::bifolia},
     {"f_blob", 5, curves::blob},
     {"f_blob2", 4, curves::blob2},
-    {"f_boy_surface", 2, nullptr},
-    {"f_comma", 1, nullptr},
+    {"f_boy_surface", 2, special::boy_surface},
+    {"f_comma", 1, special::comma},
     {"f_cross_ellipsoids", 4, surfaces::cross_ellipsoids},
     {"f_crossed_trough", 1, surfaces::crossed_trough},
     {"f_cubic_saddle", 1, surfaces::cubic_saddle},
     {"f_cushion", 1, surfaces::cushion},
     {"f_devils_curve", 1, surfaces::devils_curve},
     {"f_devils_curve_2d", 6, curves::devils_curve_2d},
-    {"f_dupin_cyclid", 6, nullptr},
+    {"f_dupin_cyclid", 6, special::dupin_cyclid},
     {"f_ellipsoid", 3, f_ellipsoid},
-    {"f_enneper", 1, nullptr},
+    {"f_enneper", 1, special::enneper},
     {"f_flange_cover", 4, curves::flange_cover},
     {"f_folium_surface", 3, surfaces::folium_surface},
     {"f_folium_surface_2d", 6, curves::folium_surface_2d},
     {"f_glob", 1, surfaces::glob},
     {"f_heart", 1, surfaces::heart},
-    {"f_helical_torus", 10, nullptr},
+    {"f_helical_torus", 10, special::helical_torus},
     {"f_helix1", 7, f_helix1},
-    {"f_helix2", 7, nullptr},
-    {"f_hex_x", 1, nullptr},
-    {"f_hex_y", 1, nullptr},
+    {"f_helix2", 7, special::helix2},
+    {"f_hex_x", 1, special::hex_x},
+    {"f_hex_y", 1, special::hex_y},
     {"f_hetero_mf", 6, f_hetero_mf},
     {"f_hunt_surface", 1, surfaces::hunt_surface},
     {"f_hyperbolic_torus", 3, surfaces::hyperbolic_torus},
@@ -250,7 +251,7 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_piriform_2d", 7, curves::piriform_2d},
     {"f_poly4", 5, curves::poly4},
     {"f_polytubes", 6, curves::polytubes},
-    {"f_quantum", 1, nullptr},
+    {"f_quantum", 1, special::quantum},
     {"f_quartic_paraboloid", 1, surfaces::quartic_paraboloid},
     {"f_quartic_saddle", 1, surfaces::quartic_saddle},
     {"f_quartic_cylinder", 3, surfaces::quartic_cylinder},
