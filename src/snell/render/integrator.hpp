@@ -11,6 +11,7 @@
 #include "snell/math/constants.hpp"
 #include "snell/math/pcg32.hpp"
 #include "snell/math/ray.hpp"
+#include "snell/render/lit_lights.hpp"
 #include "snell/render/radiosity/tile_records.hpp"
 #include "snell/render/ray_counters.hpp"
 #include "snell/render/tiles.hpp"
@@ -39,6 +40,9 @@ struct TraceContext {
   /// Per light (by its index in Scene::lights): the object that last stopped one of its shadow rays, tried
   /// first by the next one (POV-Ray's shadow cache, lighting.cpp). Neighbouring points usually share it.
   std::vector<const scene::Object*> shadow_blockers;
+  /// Shadow-tested light colours of the surface points being shaded, one frame of Scene::lights.size()
+  /// entries per nesting level (render/lit_lights.hpp); reused by every layer and map entry of a texture.
+  LitLights lit_lights;
 };
 
 class Integrator {

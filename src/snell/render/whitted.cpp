@@ -206,8 +206,13 @@ Color WhittedIntegrator::shade(const Ray& ray, const scene::SurfaceHit& hit, int
                                const InteriorStack& inside, TraceContext& context,
                                const material::Texture* texture_entry) const {
   const material::Texture& texture = texture_entry ? *texture_entry : *hit.object->texture;
+  // One frame of shadow-tested lights for this point, shared by the entries of an averaged texture.
+  std::optional<LitLightsFrame> lit_frame;
+  if (!texture_entry) lit_frame.emplace(context.lit_lights, scene_.lights.size());
+  const int frame = lit_frame ? lit_frame->frame() : context.lit_lights.innermost();
   if (!texture.averaged.empty()) return shade_averaged(ray, hit, texture, level, weight, inside, context);
   ShadingPoint sp;
+  sp.lit_frame = frame;
   sp.ray = &ray;
   sp.hit = &hit;
   sp.texture = &texture;
@@ -439,6 +444,20 @@ Color WhittedIntegrator::trace_reflection(const ShadingPoint& sp, const Vec3& di
                level + 1, weight, inside, context);
 }
 
+template <class Test>
+Color WhittedIntegrator::shadow_tested(const ShadingPoint& sp, const scene::Light& light,
+                                       TraceContext& context, Test&& test) const {
+  if (sp.lit_frame < 0) return test();
+  const auto index = static_cast<size_t>(&light - scene_.lights.data());
+  if (const LitLights::Entry& known = context.lit_lights.lookup(sp.lit_frame, index); known.tested)
+    return known.colour;
+  const Color c = test();  // may shade other points, which may grow the storage: look the entry up again
+  LitLights::Entry& entry = context.lit_lights.lookup(sp.lit_frame, index);
+  entry.tested = true;
+  entry.colour = c;
+  return c;
+}
+
 Color WhittedIntegrator::direct_light(const ShadingPoint& sp, TraceContext& context) const {
   const bool double_illuminate = sp.hit->object->flags.double_illuminate;
   // Radiosity's gather rays see an area light as a point light at its centre (POV-Ray 3.7 radiosity.cpp,
@@ -458,8 +477,10 @@ Color WhittedIntegrator::direct_light(const ShadingPoint& sp, TraceContext& cont
     if (!double_illuminate && cos_l < kEpsilon) continue;
     Color lc = lr.color;
     if (!light.shadowless) {
-      lc = area ? area_shadow(sp, light, lr, context)
-                : shadowed(light, sp.point, sp.raw_normal, lr, lc, context);
+      lc = shadow_tested(sp, light, context, [&] {
+        return area ? area_shadow(sp, light, lr, context)
+                    : shadowed(light, sp.point, sp.raw_normal, lr, lr.color, context);
+      });
       if (max_abs(lc) < kEpsilon) continue;
     }
     sum += surface_response(sp, lr.direction, lc);
@@ -484,7 +505,8 @@ Color WhittedIntegrator::full_area_light(const ShadingPoint& sp, const scene::Li
   LightRay centre = light_direction(light, sp.point);
   centre.color = light.color;
   Color lc = light.color;
-  if (!light.shadowless) lc = area_shadow(sp, light, centre, context);
+  if (!light.shadowless)
+    lc = shadow_tested(sp, light, context, [&] { return area_shadow(sp, light, centre, context); });
   if (max_abs(lc) < kEpsilon) return Color(0);
   const auto [axis1, axis2] = area_light_axes(light, centre.direction);
   const Color part = lc / static_cast<double>(light.size1 * light.size2);

@@ -62,6 +62,11 @@ class WhittedIntegrator final : public Integrator {
                            const scene::Object* object, double relative_ior, int level, double weight,
                            const InteriorStack& inside, TraceContext& context, math::Color& filter) const;
   math::Color direct_light(const ShadingPoint& sp, TraceContext& context) const;
+  /// `light`'s colour at the shading point after `test()`, its shadow test, run once per shading point
+  /// however many layers and texture entries light it (lit_lights.hpp).
+  template <class Test>
+  math::Color shadow_tested(const ShadingPoint& sp, const scene::Light& light, TraceContext& context,
+                            Test&& test) const;
   /// Mean light through an area light's shadow rays; `centre` is the ray to its centre, with its colour.
   math::Color area_shadow(const ShadingPoint& sp, const scene::Light& light, const LightRay& centre,
                           TraceContext& context) const;

@@ -27,6 +27,8 @@ struct WhittedIntegrator::ShadingPoint {
   /// Phong and specular highlights; off for radiosity's gather rays (trace.cpp, ComputeOneLightRay: "too
   /// bright" otherwise).
   bool highlights = true;
+  /// The frame of TraceContext::lit_lights holding this point's shadow-tested lights; -1 for none.
+  int lit_frame = -1;
 };
 
 /// The transmitted colour of a surface colour: filter passes light tinted, transmit untinted.
