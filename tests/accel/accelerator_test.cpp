@@ -133,6 +133,34 @@ TEST(EmbreeAcceleratorTest, ConcurrentQueriesAgreeWithBruteForce) {
   for (int m : mismatches) EXPECT_EQ(m, 0);
 }
 
+// An occlusion query answers "is anything hit in the window" for every back end: Embree's rtcOccluded1
+// walk and the default (the nearest hit) agree with brute force's nearest hit on random rays and short
+// windows (shadow rays end at their light), for every ray kind, and name an object the ray really hits.
+TEST(AcceleratorTest, OccluderAgreesWithBruteForce) {
+  const scene::Scene s = random_scene(33, 300);
+  const auto brute = accel::make_accelerator("none", s);
+  for (const char* kind : {"embree", "bvh", "octree", "grid", "none"}) {
+    const auto a = accel::make_accelerator(kind, s);
+    math::Pcg32 rng(5);
+    int blocked = 0, mismatches = 0;
+    for (int i = 0; i < 4000; ++i) {
+      const math::Ray ray{uniform_vec(rng, -12, 12), uniform_vec(rng, -1, 1), 0};
+      const double t_max = i % 2 ? math::kInfinity : uniform(rng, 0.5, 20);
+      const RayKind ray_kind = kKinds[i % 4];
+      scene::SurfaceHit nearest;
+      const bool hit = brute->intersect(ray, 1e-6, t_max, ray_kind, nearest);
+      const scene::Object* o = a->occluder(ray, 1e-6, t_max, ray_kind);
+      scene::SurfaceHit own;
+      if (hit != (o != nullptr) || (o && !(o->visible_to(ray_kind) && o->intersect(ray, 1e-6, t_max, own))))
+        ++mismatches;
+      blocked += hit;
+    }
+    EXPECT_EQ(mismatches, 0) << kind;
+    EXPECT_GT(blocked, 1000) << kind;
+    EXPECT_LT(blocked, 3000) << kind;
+  }
+}
+
 TEST(MakeAcceleratorTest, UnknownKindThrows) {
   const scene::Scene s;
   EXPECT_THROW(accel::make_accelerator("kdtree", s), std::invalid_argument);

@@ -76,6 +76,30 @@ TEST(EmbreeMeshTest, InstancedNativeMeshesGiveTheBruteForceHits) {
   EXPECT_EQ(same_face, hits);
 }
 
+// Occlusion walks the instanced float triangles too: the filter redoes each in double and Embree stops
+// at the first one it accepts.
+TEST(EmbreeMeshTest, OccluderOfNativeMeshesAgreesWithBruteForce) {
+  const scene::Scene s = instanced_scene(9);
+  const auto embree = accel::make_accelerator("embree", s);
+  const auto brute = accel::make_accelerator("none", s);
+  math::Pcg32 rng(13);
+  int blocked = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const math::Ray ray{uniform_vec(rng, -14, 14), normalize(uniform_vec(rng, -1, 1)), 0};
+    const RayKind kind = kKinds[i % 4];
+    const double t_max = i % 2 ? 1e30 : uniform(rng, 0.5, 15);
+    scene::SurfaceHit hb;
+    const bool fb = brute->intersect(ray, 1e-6, t_max, kind, hb);
+    const scene::Object* o = embree->occluder(ray, 1e-6, t_max, kind);
+    ASSERT_EQ(o != nullptr, fb) << "ray " << i;
+    if (!o) continue;
+    ++blocked;
+    scene::SurfaceHit own;
+    EXPECT_TRUE(o->visible_to(kind) && o->intersect(ray, 1e-6, t_max, own)) << "ray " << i;
+  }
+  EXPECT_GT(blocked, 500);
+}
+
 TEST(EmbreeMeshTest, SmallMeshesStayUserGeometry) {
   scene::Scene s;
   s.objects.push_back(make_object(uv_sphere(3, 4)));

@@ -27,6 +27,11 @@ class Accelerator {
   /// Nearest hit with t in (t_min, t_max) among objects visible to `kind`.
   virtual bool intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
                          scene::SurfaceHit& hit) const = 0;
+  /// For shadow rays through opaque scenes: some object visible to `kind` hit with t in (t_min, t_max)
+  /// (the one found first, not necessarily the nearest), or null. Stops at the first hit, and builds no
+  /// SurfaceHit for the caller; this default asks intersect().
+  virtual const scene::Object* occluder(const math::Ray& ray, double t_min, double t_max,
+                                        scene::RayKind kind) const;
   virtual std::string_view name() const = 0;
   virtual AcceleratorStats stats() const = 0;
 };

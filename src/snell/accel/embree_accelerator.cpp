@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <future>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -56,6 +57,7 @@ struct QueryContext {
   scene::RayKind kind;
   scene::SurfaceHit* hit;
   bool found;
+  const scene::Object* occluder;  // occlusion queries: the object that ended the walk
 };
 
 }  // namespace
@@ -130,6 +132,19 @@ struct EmbreeAccelerator::Impl {
     RTCHitN_primID(hit, 1, 0) = args->primID;
   }
 
+  // Occlusion: any double-precision hit of the object within the window ends Embree's walk (tfar = -inf,
+  // the Embree 3 manual's convention for an occluded ray).
+  static void occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;  // rtcOccluded1 always passes N = 1
+    auto* q = reinterpret_cast<QueryContext*>(args->context);
+    const auto* self = static_cast<const Impl*>(args->geometryUserPtr);
+    const scene::Object* object = self->bounded[args->primID];
+    if (!test_object(*object, *q->ray, q->t_min, q->t_max, q->kind, *q->hit)) return;
+    q->found = true;
+    q->occluder = object;
+    RTCRayN_tfar(args->ray, 1, 0) = -std::numeric_limits<float>::infinity();
+  }
+
   // A native triangle Embree found in float: redone in double on the object's own ray and kept only when
   // it is visible to the ray's kind and nearer than the best double hit so far.
   static void triangle_filter(const RTCFilterFunctionNArguments* args) {
@@ -153,7 +168,13 @@ struct EmbreeAccelerator::Impl {
     *q->hit = object->to_world(*q->ray, *local);
     q->t_max = local->t;
     q->found = true;
+    q->occluder = object;  // an occlusion query ends at this accepted hit
   }
+
+  /// Fills `q` and the float ray for a query of `ray` over (t_min, t_max); false when the ray misses the
+  /// scene box or cannot be walked in float (then `walkable` is false too).
+  bool prepare(const Ray& ray, double t_min, double t_max, scene::RayKind kind, scene::SurfaceHit& hit,
+               QueryContext& q, RTCRay& r, bool& walkable) const;
 };
 
 EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
@@ -198,6 +219,7 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
     rtcSetGeometryUserData(geometry, &s);
     rtcSetGeometryBoundsFunction(geometry, &Impl::bounds, &s);
     rtcSetGeometryIntersectFunction(geometry, &Impl::intersect);
+    rtcSetGeometryOccludedFunction(geometry, &Impl::occluded);
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(s.scene, geometry);
     rtcReleaseGeometry(geometry);
@@ -221,28 +243,24 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
 
 EmbreeAccelerator::~EmbreeAccelerator() = default;
 
-bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, scene::RayKind kind,
-                                  scene::SurfaceHit& hit) const {
-  const Impl& s = *impl_;
-  bool found = test_all(s.unbounded, ray, t_min, t_max, kind, hit);
+bool EmbreeAccelerator::Impl::prepare(const Ray& ray, double t_min, double t_max, scene::RayKind kind,
+                                      scene::SurfaceHit& hit, QueryContext& q, RTCRay& r,
+                                      bool& walkable) const {
+  walkable = true;
   // An empty or NaN window (caught by the negated test) has no hits; Embree must not see NaN rays.
-  if ((s.bounded.empty() && s.native.empty()) || !(t_min < t_max)) return found;
-
+  if ((bounded.empty() && native.empty()) || !(t_min < t_max)) return false;
   const double length = math::length(ray.direction);
   if (!(length > 0) || !std::isfinite(length) || !math::is_finite(ray.origin)) {
-    // Nothing Embree can walk; fall back to testing every object, still in double precision.
-    const bool any_bounded = test_all(s.bounded, ray, t_min, t_max, kind, hit);
-    return test_all(s.native, ray, t_min, t_max, kind, hit) || any_bounded || found;
+    walkable = false;
+    return false;
   }
-
   // Start the float ray where the double ray enters the scene box, not at the (possibly distant) camera:
   // float rounding of the origin then scales with the scene, which the box padding covers.
   double t0 = t_min, t1 = t_max;
-  if (!s.scene_bounds.clip(ray, t0, t1)) return found;
+  if (!scene_bounds.clip(ray, t0, t1)) return false;
   const Vec3 origin = ray.at(t0);
   const Vec3 direction = ray.direction / length;
 
-  QueryContext q{};
   rtcInitIntersectContext(&q.base);
   if (kind == scene::RayKind::camera) q.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   q.ray = &ray;
@@ -250,27 +268,63 @@ bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, sc
   q.t_max = t_max;
   q.t_shift = t0;
   q.length = length;
-  q.pad = s.pad;
+  q.pad = pad;
   q.kind = kind;
   q.hit = &hit;
   q.found = false;
+  q.occluder = nullptr;
 
+  r.org_x = static_cast<float>(origin.x);
+  r.org_y = static_cast<float>(origin.y);
+  r.org_z = static_cast<float>(origin.z);
+  r.dir_x = static_cast<float>(direction.x);
+  r.dir_y = static_cast<float>(direction.y);
+  r.dir_z = static_cast<float>(direction.z);
+  r.tnear = 0;
+  r.tfar = round_up((t1 - t0) * length * (1 + 1e-6) + pad);
+  r.time = static_cast<float>(ray.time);
+  r.mask = ~0u;
+  r.flags = 0;
+  return true;
+}
+
+bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, scene::RayKind kind,
+                                  scene::SurfaceHit& hit) const {
+  const Impl& s = *impl_;
+  bool found = test_all(s.unbounded, ray, t_min, t_max, kind, hit);
+  QueryContext q{};
   RTCRayHit rh{};
-  rh.ray.org_x = static_cast<float>(origin.x);
-  rh.ray.org_y = static_cast<float>(origin.y);
-  rh.ray.org_z = static_cast<float>(origin.z);
-  rh.ray.dir_x = static_cast<float>(direction.x);
-  rh.ray.dir_y = static_cast<float>(direction.y);
-  rh.ray.dir_z = static_cast<float>(direction.z);
-  rh.ray.tnear = 0;
-  rh.ray.tfar = round_up((t1 - t0) * length * (1 + 1e-6) + s.pad);
-  rh.ray.time = static_cast<float>(ray.time);
-  rh.ray.mask = ~0u;
-  rh.ray.flags = 0;
+  bool walkable;
+  if (!s.prepare(ray, t_min, t_max, kind, hit, q, rh.ray, walkable)) {
+    if (walkable) return found;
+    // Nothing Embree can walk; fall back to testing every object, still in double precision.
+    const bool any_bounded = test_all(s.bounded, ray, t_min, t_max, kind, hit);
+    return test_all(s.native, ray, t_min, t_max, kind, hit) || any_bounded || found;
+  }
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(s.scene, &q.base, &rh);
   return found || q.found;
+}
+
+const scene::Object* EmbreeAccelerator::occluder(const Ray& ray, double t_min, double t_max,
+                                                 scene::RayKind kind) const {
+  const Impl& s = *impl_;
+  scene::SurfaceHit hit;  // scratch for the object tests
+  for (const scene::Object* o : s.unbounded)
+    if (test_object(*o, ray, t_min, t_max, kind, hit)) return o;
+  QueryContext q{};
+  RTCRay r{};
+  bool walkable;
+  if (!s.prepare(ray, t_min, t_max, kind, hit, q, r, walkable)) {
+    if (walkable) return nullptr;
+    for (const auto* objects : {&s.bounded, &s.native})
+      for (const scene::Object* o : *objects)
+        if (test_object(*o, ray, t_min, t_max, kind, hit)) return o;
+    return nullptr;
+  }
+  rtcOccluded1(s.scene, &q.base, &r);
+  return q.occluder;
 }
 
 void warm_up_embree() {

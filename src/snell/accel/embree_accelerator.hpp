@@ -22,6 +22,9 @@ class EmbreeAccelerator final : public Accelerator {
   /// Safe to call from many threads at once (rtcIntersect1 on a committed scene is read-only).
   bool intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
                  scene::SurfaceHit& hit) const override;
+  /// rtcOccluded1: traversal ends at the first object hit.
+  const scene::Object* occluder(const math::Ray& ray, double t_min, double t_max,
+                                scene::RayKind kind) const override;
   std::string_view name() const override { return "embree"; }
   AcceleratorStats stats() const override { return stats_; }
 

@@ -42,6 +42,7 @@ RTCScene MeshSceneCache::scene_of(const geometry::Mesh& mesh) {
                              3 * sizeof(unsigned), data.faces.size());
   rtcSetGeometryUserData(geometry, user_data_);
   rtcSetGeometryIntersectFilterFunction(geometry, filter_);
+  rtcSetGeometryOccludedFilterFunction(geometry, filter_);
   rtcCommitGeometry(geometry);
   RTCScene scene = rtcNewScene(device_);
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);

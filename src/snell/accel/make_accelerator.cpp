@@ -10,6 +10,12 @@
 
 namespace snell::accel {
 
+const scene::Object* Accelerator::occluder(const math::Ray& ray, double t_min, double t_max,
+                                           scene::RayKind kind) const {
+  scene::SurfaceHit hit;
+  return intersect(ray, t_min, t_max, kind, hit) ? hit.object : nullptr;
+}
+
 std::unique_ptr<Accelerator> make_accelerator(std::string_view kind, const scene::Scene& scene) {
   if (kind == "embree") return std::make_unique<EmbreeAccelerator>(scene);
   if (kind == "bvh") return std::make_unique<Bvh>(scene);

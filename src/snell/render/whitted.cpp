@@ -16,6 +16,7 @@
 #include "snell/render/subsurface.hpp"
 #include "snell/render/subsurface_povray.hpp"
 #include "snell/render/whitted_shading_point.hpp"
+#include "snell/scene/csg.hpp"
 
 namespace snell::render {
 
@@ -58,10 +59,22 @@ double max_abs(const Color& c) {
 
 /// The scene-level object of a blocking hit, as the accelerator tests it; null for a mesh, whose own
 /// triangle tree Embree's native meshes never build (the cache must not build it either).
-const scene::Object* cacheable_blocker(const scene::SurfaceHit& hit) {
-  const scene::Object* object = hit.solid ? hit.solid : hit.object;
+const scene::Object* cacheable_blocker(const scene::Object* object) {
   if (!object || (object->shape && dynamic_cast<const geometry::Mesh*>(object->shape.get()))) return nullptr;
   return object;
+}
+
+const scene::Object* cacheable_blocker(const scene::SurfaceHit& hit) {
+  return cacheable_blocker(hit.solid ? hit.solid : hit.object);
+}
+
+/// Whether no surface of `object` can let light through (its leaves' textures, a CSG's own too).
+bool stops_all_light(const scene::Object& object) {
+  if (object.texture && object.texture->may_transmit()) return false;
+  if (object.csg)
+    for (const auto& child : object.csg->children())
+      if (!stops_all_light(*child)) return false;
+  return true;
 }
 
 material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
@@ -99,6 +112,8 @@ WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Acc
   for (const auto& object : scene.objects)
     if (object->interior && !object->interior->media.empty()) has_interior_media_ = true;
   has_atmosphere_ = has_interior_media_ || !scene.fogs.empty() || !scene.atmosphere.empty();
+  opaque_shadows_ = !has_interior_media_ && std::all_of(scene.objects.begin(), scene.objects.end(),
+                                                        [](const auto& o) { return stops_all_light(*o); });
   if (has_atmosphere_) camera_inside_ = containing(scene.camera.location);
   caustics_ = photons::make_caustics(scene, accelerator);
 }
@@ -643,6 +658,15 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     if (accel::test_object(**cached, {origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit) &&
         opaque_at(hit))
       return Color(0);
+  }
+  // Where nothing can let light through, any blocker will do: the walk stops at the first one found and
+  // no hit is built (an observer wants every blocker in order, so it takes the loop below).
+  if (opaque_shadows_ && !context.observer) {
+    const scene::Object* blocker =
+        accel_.occluder({origin, dir, context.time}, 0.0, remaining, RayKind::shadow);
+    if (!blocker) return light;
+    if (cached) *cached = cacheable_blocker(blocker);
+    return Color(0);
   }
   // Media inside the solids crossed thin the light whatever the light's media flags (POV-Ray 3.7 trace.cpp,
   // ComputeShadowColour; those flags govern the atmosphere only).

@@ -111,6 +111,8 @@ class WhittedIntegrator final : public Integrator {
 
   std::vector<const material::Media*> atmosphere_;
   bool has_interior_media_ = false;
+  /// No surface lets light through and no solid holds media: a shadow ray is blocked by any hit.
+  bool opaque_shadows_ = false;
   /// Fog or media anywhere: camera rays then start inside the objects around the camera.
   bool has_atmosphere_ = false;
   InteriorStack camera_inside_;
