@@ -653,7 +653,9 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   // Any opaque blocker makes the light black, whatever else lies on the way, so the last one this light
   // met is tried alone before the whole scene. (Not while an observer records the blockers in order.)
   const scene::Object** cached = cached_blocker(source, context);
-  scene::SurfaceHit hit;  // filled by each test that finds one
+  // Filled by each test that finds one; kept per thread, as clearing a fresh one for every shadow ray cost
+  // more than some of the tests (nothing below traces another shadow ray while it is in use).
+  thread_local scene::SurfaceHit hit;
   if (cached && *cached) {
     if (accel::test_object(**cached, {origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit) &&
         opaque_at(hit))
