@@ -68,6 +68,19 @@ inline void check_random_rays(const Shape& shape, bool solid, int count = 2000, 
     EXPECT_NEAR(scaled.t * factor, first.t, 1e-7 * first.t);
   }
   EXPECT_GT(hit_rays, count / 20) << "too few rays hit: the test is not testing";
+  // A shape that says its inside lies within its bounds (CSG then answers inside() by a box test there):
+  // no point outside the bounds is inside, however near; sampled on shells just outside the box.
+  if (shape.inside_within_bounds()) {
+    for (int i = 0; i < count; ++i) {
+      const Vec3 u = random_unit(rng);
+      Vec3 p = c + (0.5 + rng.next_double()) * r * u;
+      for (int a = 0; a < 3; ++a)  // pull each coordinate onto the box face just outside, half the time
+        if (rng.next_double() < 0.5 && (p[a] < b.lo[a] || p[a] > b.hi[a]))
+          p[a] = p[a] < b.lo[a] ? b.lo[a] - 1e-9 * (1 + r) : b.hi[a] + 1e-9 * (1 + r);
+      if (b.contains(p)) continue;
+      EXPECT_FALSE(shape.inside(p)) << "inside() outside the bounds at " << p.x << ' ' << p.y << ' ' << p.z;
+    }
+  }
 }
 
 }  // namespace snell::geometry::shape_checks

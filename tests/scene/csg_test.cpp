@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "snell/geometry/box.hpp"
+#include "snell/geometry/disc.hpp"
 #include "snell/geometry/sphere.hpp"
 #include "snell/math/constants.hpp"
 #include "snell/scene/object.hpp"
@@ -153,6 +155,36 @@ TEST(CsgTest, NestedCsgReportsTheLeaf) {
   ASSERT_TRUE(half->intersect({{1.5, 0, -5}, {0, 0, 1}, 0}, 1e-9, kFar, hit));
   EXPECT_NEAR(hit.t, 15 - std::sqrt(97.75), 1e-9);
   EXPECT_EQ(hit.object, cut.get());
+}
+
+// keeps() answers a child's inside() by its box where the shape says its inside lies within its bounds,
+// and asks the shape otherwise: a disc's inside is its whole lower half-space (POV-Ray disc.cpp), so a box
+// minus a small disc loses everything below the disc's plane, far outside the disc's own box.
+TEST(CsgTest, DifferenceByADiscCutsItsWholeHalfSpace) {
+  auto box = std::make_shared<Object>();
+  box->shape = std::make_shared<geometry::Box>(Vec3(-2), Vec3(2));
+  box->texture = material::Texture::default_texture();
+  auto disc = std::make_shared<Object>();
+  disc->shape = std::make_shared<geometry::Disc>(Vec3(0), Vec3(0, 1, 0), 0.1, 0);
+  disc->texture = material::Texture::default_texture();
+  disc->flags.inverse = true;
+  const ObjectPtr cut = csg(CsgKind::intersection, {box, disc});
+  EXPECT_FALSE(cut->inside({1.5, -1, 1.5}));  // below the plane, far from the disc's box
+  EXPECT_TRUE(cut->inside({1.5, 1, 1.5}));
+  SurfaceHit hit;
+  // Down from above at x = 1.5 the box's top is the first surface. Up from below, the box's bottom face
+  // lies in the cut half-space and the plane y = 0 is no surface (the disc is hit only within its radius),
+  // so the first surface is the top face again, from inside.
+  ASSERT_TRUE(cut->intersect({{1.5, 5, 1.5}, {0, -1, 0}, 0}, 1e-9, kFar, hit));
+  EXPECT_NEAR(hit.t, 3, 1e-12);
+  ASSERT_TRUE(cut->intersect({{1.5, -5, 1.5}, {0, 1, 0}, 0}, 1e-9, kFar, hit));
+  EXPECT_NEAR(hit.t, 7, 1e-12);
+  // A sphere cut away is answered by its box outside it, the same as by the sphere.
+  const ObjectPtr shell = csg(CsgKind::intersection, {sphere({0, 0, 0}, 2), sphere({0, 0, 0}, 1, true)});
+  EXPECT_TRUE(shell->inside({1.9, 0, 0}));
+  EXPECT_FALSE(shell->inside({0.5, 0, 0}));
+  ASSERT_TRUE(shell->intersect({{-5, 0, 0}, {1, 0, 0}, 0}, 1e-9, kFar, hit));
+  EXPECT_NEAR(hit.t, 3, 1e-12);
 }
 
 TEST(CsgTest, EmptyCsgIsAnError) {

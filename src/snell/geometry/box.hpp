@@ -13,6 +13,7 @@ class Box final : public Shape {
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override;
+  bool inside_within_bounds() const override { return true; }
   std::string_view kind() const override { return "box"; }
 
  private:

@@ -46,6 +46,9 @@ class Shape {
   virtual void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const = 0;
   /// Whether `p` (shape space) lies inside the solid. Open/flat shapes answer as POV-Ray does.
   virtual bool inside(const Vec3& p) const = 0;
+  /// Whether inside() is false everywhere outside bounds(), so that a box test can answer it there. Not
+  /// so for a disc (its whole lower half-space is inside, as in POV-Ray); the shapes that are say so.
+  virtual bool inside_within_bounds() const { return false; }
   /// The POV-Ray keyword of the shape, for statistics and messages.
   virtual std::string_view kind() const = 0;
 };

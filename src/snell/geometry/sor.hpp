@@ -19,6 +19,7 @@ class Sor final : public Shape {
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override;
+  bool inside_within_bounds() const override { return true; }
   std::string_view kind() const override { return "sor"; }
 
   /// Squared radius at height y (within the shape's height range).

@@ -74,6 +74,15 @@ Csg::Csg(CsgKind kind, std::vector<std::shared_ptr<const Object>> children, size
   clip_bounds_ = padded(bounds_);
   for (size_t i = 0; i < surface_children_; ++i)
     child_clip_bounds_.push_back(padded(children_[i]->world_bounds()));
+  for (const auto& c : children_) {
+    const bool boxed = c->shape && !c->csg && !c->motion && c->shape->inside_within_bounds();
+    inside_boxes_.push_back(boxed ? padded(c->world_bounds()) : math::Bounds3::infinite());
+  }
+}
+
+bool Csg::child_inside(size_t j, const math::Vec3& p, double time) const {
+  if (!inside_boxes_[j].contains(p)) return children_[j]->flags.inverse;
+  return children_[j]->inside(p, time);
 }
 
 bool Csg::clip_to_bounds(const math::Ray& ray, double& t_min, double& t_max) const {
@@ -92,11 +101,11 @@ bool Csg::keeps(size_t i, const math::Vec3& p, double time) const {
       return true;
     case CsgKind::merge:
       for (size_t j = 0; j < children_.size(); ++j)
-        if (j != i && children_[j]->inside(p, time)) return false;
+        if (j != i && child_inside(j, p, time)) return false;
       return true;
     case CsgKind::intersection:
       for (size_t j = 0; j < children_.size(); ++j)
-        if (j != i && !children_[j]->inside(p, time)) return false;
+        if (j != i && !child_inside(j, p, time)) return false;
       return true;
   }
   return true;

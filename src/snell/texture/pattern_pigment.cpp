@@ -33,6 +33,7 @@ PatternPigment::PatternPigment(PatternSpec spec) : spec_(std::move(spec)) {
   } else if (!spec_.color_map && !spec_.pigment_map) {
     spec_.color_map = ColorMap::default_map();
   }
+  may_transmit_ = any_entry_transmits();
 }
 
 material::Rgbft PatternPigment::at(const material::PatternPoint& point) const {
@@ -44,7 +45,7 @@ material::Rgbft PatternPigment::at(const material::PatternPoint& point) const {
   return spec_.color_map->at(v);
 }
 
-bool PatternPigment::may_transmit() const {
+bool PatternPigment::any_entry_transmits() const {
   auto any = [](const auto& pigments, auto pigment_of) {
     for (const auto& entry : pigments)
       if (const PigmentPtr& p = pigment_of(entry); !p || p->may_transmit()) return true;

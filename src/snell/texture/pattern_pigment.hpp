@@ -51,11 +51,15 @@ class PatternPigment final : public material::Pigment {
   explicit PatternPigment(PatternSpec spec);
   material::Rgbft at(const material::PatternPoint& point) const override;
   /// A colour map blends its entries, so it transmits only if an entry does; likewise the sub-pigments.
-  bool may_transmit() const override;
+  bool may_transmit() const override { return may_transmit_; }
   const PatternSpec& spec() const { return spec_; }
 
  private:
+  /// Known once the spec is: shadow rays ask it at every blocker (a granite map has 20-odd entries).
+  bool any_entry_transmits() const;
+
   PatternSpec spec_;
+  bool may_transmit_ = true;
 };
 
 /// A pigment moved by `transform` as a whole, sub-pigments and turbulence included: what a transform
