@@ -187,6 +187,37 @@ TEST(CsgTest, DifferenceByADiscCutsItsWholeHalfSpace) {
   EXPECT_NEAR(hit.t, 3, 1e-12);
 }
 
+// POV-Ray inverts a CSG object by inverting its children, and an inverted union becomes the intersection
+// of the inverted children (csg.cpp, CSGUnion::Invert): the inner surfaces a union keeps (each child's
+// surface inside the other) are gone once it is inverted, as in chess2.pov's crowns, where a ring of
+// overlapping spheres is cut out of a cone. Here a ball of radius 3 minus the union of two unit spheres at
+// x = -0.5 and 0.5: along the x axis the cavity's walls are at x = -1.5 and 1.5 only; the union's own inner
+// surfaces at x = -0.5 and 0.5 are not surfaces of the difference. The same holds one level down, for a
+// union inside an inverted intersection.
+TEST(CsgTest, InvertedUnionLosesItsInnerSurfaces) {
+  const ObjectPtr pair = csg(CsgKind::union_of, {sphere({-0.5, 0, 0}, 1), sphere({0.5, 0, 0}, 1)});
+  auto cut_away = std::make_shared<Object>(*pair);
+  cut_away->flags.inverse = true;
+  const ObjectPtr ball = csg(CsgKind::intersection, {sphere({0, 0, 0}, 3), cut_away});
+  std::vector<SurfaceHit> all;
+  ball->all_hits({{-5, 0, 0}, {1, 0, 0}, 0}, 1e-9, kFar, all);
+  ASSERT_EQ(all.size(), 4u);
+  const double ts[4] = {2, 3.5, 6.5, 8};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(all[static_cast<size_t>(i)].t, ts[i], 1e-12);
+  // The union itself keeps its inner surfaces.
+  all.clear();
+  pair->all_hits({{-5, 0, 0}, {1, 0, 0}, 0}, 1e-9, kFar, all);
+  EXPECT_EQ(all.size(), 4u);
+  // A union inside an intersection that is inverted as a whole is inverted with it.
+  auto outer = std::make_shared<Object>(*csg(CsgKind::intersection, {pair, sphere({0, 0, 0}, 10)}));
+  outer->flags.inverse = true;
+  const ObjectPtr shell = csg(CsgKind::intersection, {sphere({0, 0, 0}, 3), outer});
+  all.clear();
+  shell->all_hits({{-5, 0, 0}, {1, 0, 0}, 0}, 1e-9, kFar, all);
+  ASSERT_EQ(all.size(), 4u);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(all[static_cast<size_t>(i)].t, ts[i], 1e-12);
+}
+
 TEST(CsgTest, EmptyCsgIsAnError) {
   EXPECT_THROW(Csg(CsgKind::merge, {}), std::invalid_argument);
 }

@@ -95,8 +95,8 @@ bool Csg::may_hit_child(size_t i, const math::Ray& ray, double t_min, double t_m
   return !b.empty() && b.clip(ray, t_min, t_max);
 }
 
-bool Csg::keeps(size_t i, const math::Vec3& p, double time) const {
-  switch (kind_) {
+bool Csg::keeps(CsgKind kind, size_t i, const math::Vec3& p, double time) const {
+  switch (kind) {
     case CsgKind::union_of:
       return true;
     case CsgKind::merge:
@@ -111,7 +111,8 @@ bool Csg::keeps(size_t i, const math::Vec3& p, double time) const {
   return true;
 }
 
-bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
+bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit, bool inverted) const {
+  const CsgKind kind = surface_kind(inverted);
   bool found = false;
   if (!clip_to_bounds(ray, t_min, t_max)) return false;
   ScratchHits scratch;
@@ -119,8 +120,8 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
   for (size_t i = 0; i < surface_children_; ++i) {
     if (!may_hit_child(i, ray, t_min, t_max)) continue;
     const Object& child = *children_[i];
-    if (kind_ == CsgKind::union_of) {
-      if (child.intersect(ray, t_min, t_max, hit)) {
+    if (kind == CsgKind::union_of) {
+      if (child.intersect(ray, t_min, t_max, hit, inverted)) {
         t_max = hit.t;
         found = true;
       }
@@ -133,7 +134,7 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
       local.clear();
       child.shape->all_hits(child.transform.inverse_ray(ray), t_min, t_max, local);
       for (const geometry::LocalHit& l : local) {
-        if (!keeps(i, ray.at(l.t), ray.time)) continue;
+        if (!keeps(kind, i, ray.at(l.t), ray.time)) continue;
         hit = child.to_world(ray, l);
         t_max = l.t;
         found = true;
@@ -142,9 +143,9 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
       continue;
     }
     hits.clear();
-    child.all_hits(ray, t_min, t_max, hits);
+    child.all_hits(ray, t_min, t_max, hits, inverted);
     for (const SurfaceHit& h : hits) {
-      if (!keeps(i, h.point, ray.time)) continue;
+      if (!keeps(kind, i, h.point, ray.time)) continue;
       hit = h;
       t_max = h.t;
       found = true;
@@ -154,7 +155,9 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
   return found;
 }
 
-void Csg::all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
+void Csg::all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
+                   bool inverted) const {
+  const CsgKind kind = surface_kind(inverted);
   const size_t first = hits.size();
   if (!clip_to_bounds(ray, t_min, t_max)) return;
   ScratchHits scratch;
@@ -168,13 +171,13 @@ void Csg::all_hits(const math::Ray& ray, double t_min, double t_max, std::vector
       local.clear();
       child.shape->all_hits(child.transform.inverse_ray(ray), t_min, t_max, local);
       for (const geometry::LocalHit& l : local)
-        if (keeps(i, ray.at(l.t), ray.time)) hits.push_back(child.to_world(ray, l));
+        if (keeps(kind, i, ray.at(l.t), ray.time)) hits.push_back(child.to_world(ray, l));
       continue;
     }
     mine.clear();
-    child.all_hits(ray, t_min, t_max, mine);
+    child.all_hits(ray, t_min, t_max, mine, inverted);
     for (const SurfaceHit& h : mine)
-      if (keeps(i, h.point, ray.time)) hits.push_back(h);
+      if (keeps(kind, i, h.point, ray.time)) hits.push_back(h);
   }
   std::stable_sort(hits.begin() + static_cast<std::ptrdiff_t>(first), hits.end(),
                    [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });

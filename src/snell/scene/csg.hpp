@@ -30,10 +30,14 @@ class Csg {
   /// `surface_children` children can be hit; the rest only clip (all of them when it is 0).
   Csg(CsgKind kind, std::vector<std::shared_ptr<const Object>> children, size_t surface_children = 0);
 
-  /// Nearest kept hit in (t_min, t_max); `hit.object` is the leaf Object hit.
-  bool intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
+  /// Nearest kept hit in (t_min, t_max); `hit.object` is the leaf Object hit. `inverted`: the object is
+  /// inverted (an odd number of `inverse` on it and the CSG objects around it), so that, as in POV-Ray
+  /// (csg.cpp, CSGUnion::Invert), a union keeps only the surfaces that lie in no other child.
+  bool intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit,
+                 bool inverted = false) const;
   /// Every kept hit in (t_min, t_max), appended in increasing t.
-  void all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const;
+  void all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
+                bool inverted = false) const;
   bool inside(const math::Vec3& world_point, double time = 0) const;
   /// World bounds: union of the children for union and merge, their overlap for an intersection (so a
   /// difference, whose later children are inverted and unbounded, gets the first child's bounds).
@@ -45,8 +49,12 @@ class Csg {
   const std::vector<std::shared_ptr<const Object>>& children() const { return children_; }
 
  private:
-  /// Whether a hit on child `i` at `p` is a surface of the combined solid.
-  bool keeps(size_t i, const math::Vec3& p, double time) const;
+  /// Whether a hit on child `i` at `p` is a surface of the combined solid, combined as `kind`.
+  bool keeps(CsgKind kind, size_t i, const math::Vec3& p, double time) const;
+  /// How the surfaces combine: an inverted union's are a merge's (the intersection of its complements).
+  CsgKind surface_kind(bool inverted) const {
+    return inverted && kind_ == CsgKind::union_of ? CsgKind::merge : kind_;
+  }
 
   /// Narrows (t_min, t_max) to the padded bounds of the combined object; false when the ray misses them.
   bool clip_to_bounds(const math::Ray& ray, double& t_min, double& t_max) const;

@@ -40,28 +40,31 @@ SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& loca
   return hit;
 }
 
-bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
+bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit,
+                       bool outer_inverse) const {
   if (motion) {
     const auto d = motion->at(ray.time);
-    if (!d || !intersect_still(d->inverse_ray(ray), t_min, t_max, hit)) return false;
+    if (!d || !intersect_still(d->inverse_ray(ray), t_min, t_max, hit, outer_inverse)) return false;
     move_hit(hit, ray, *d);
     return true;
   }
-  return intersect_still(ray, t_min, t_max, hit);
+  return intersect_still(ray, t_min, t_max, hit, outer_inverse);
 }
 
-void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
-  if (!motion) return all_hits_still(ray, t_min, t_max, hits);
+void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
+                      bool outer_inverse) const {
+  if (!motion) return all_hits_still(ray, t_min, t_max, hits, outer_inverse);
   const auto d = motion->at(ray.time);
   if (!d) return;
   const size_t first = hits.size();
-  all_hits_still(d->inverse_ray(ray), t_min, t_max, hits);
+  all_hits_still(d->inverse_ray(ray), t_min, t_max, hits, outer_inverse);
   for (size_t i = first; i < hits.size(); ++i) move_hit(hits[i], ray, *d);
 }
 
-bool Object::intersect_still(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
+bool Object::intersect_still(const Ray& ray, double t_min, double t_max, SurfaceHit& hit,
+                             bool outer_inverse) const {
   if (csg) {
-    if (!csg->intersect(ray, t_min, t_max, hit)) return false;
+    if (!csg->intersect(ray, t_min, t_max, hit, outer_inverse != flags.inverse)) return false;
     if (flags.inverse) flip(hit);  // the leaf's own inverse is already in its normal
     hit.solid = this;
     return true;
@@ -72,10 +75,11 @@ bool Object::intersect_still(const Ray& ray, double t_min, double t_max, Surface
   return true;
 }
 
-void Object::all_hits_still(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const {
+void Object::all_hits_still(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
+                            bool outer_inverse) const {
   if (csg) {
     const size_t first = hits.size();
-    csg->all_hits(ray, t_min, t_max, hits);
+    csg->all_hits(ray, t_min, t_max, hits, outer_inverse != flags.inverse);
     for (size_t i = first; i < hits.size(); ++i) {
       if (flags.inverse) flip(hits[i]);
       hits[i].solid = this;

@@ -78,10 +78,14 @@ struct Object {
   std::string name;
   SourceLocation where;
 
-  /// Nearest hit with t in (t_min, t_max) of a world ray.
-  bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
+  /// Nearest hit with t in (t_min, t_max) of a world ray. `outer_inverse`: the object lies inside an odd
+  /// number of inverted CSG objects, which POV-Ray pushes down to every child (csg.cpp, CSG::Invert): an
+  /// inverted union becomes the intersection of its inverted children and loses its inner surfaces.
+  bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit,
+                 bool outer_inverse = false) const;
   /// Every hit with t in (t_min, t_max), appended in increasing t (for CSG).
-  void all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const;
+  void all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
+                bool outer_inverse = false) const;
   /// World-space bounds (infinite for unbounded shapes, or when a transform makes them so); for a moving
   /// object, over all times.
   math::Bounds3 world_bounds() const;
@@ -106,8 +110,10 @@ struct Object {
     return true;
   }
   /// intersect and all_hits for the object's still geometry (no motion applied).
-  bool intersect_still(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const;
-  void all_hits_still(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits) const;
+  bool intersect_still(const Ray& ray, double t_min, double t_max, SurfaceHit& hit,
+                       bool outer_inverse = false) const;
+  void all_hits_still(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
+                      bool outer_inverse = false) const;
   /// Builds the world-space hit from a shape-space hit of `world_ray` (transformed into object space).
   SurfaceHit to_world(const Ray& world_ray, const geometry::LocalHit& local) const;
 };
