@@ -7,24 +7,6 @@
 
 namespace snell::math {
 
-namespace {
-Vec3 apply_point(const Matrix4& a, const Vec3& p) {
-  const auto& m = a.m;
-  return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-          m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-          m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
-}
-Vec3 apply_vector(const Matrix4& a, const Vec3& v) {
-  const auto& m = a.m;
-  return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-          m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-}
-Vec3 apply_transposed_vector(const Matrix4& a, const Vec3& v) {
-  const auto& m = a.m;
-  return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
-          m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
-}
-}  // namespace
 
 std::optional<Transform> Transform::from_matrix(const Matrix4& m) {
   auto inv = m.inverse();
@@ -101,12 +83,6 @@ Transform Transform::operator*(const Transform& o) const {
   return Transform(m_ * o.m_, o.inv_ * inv_);
 }
 
-Vec3 Transform::point(const Vec3& p) const { return identity_ ? p : apply_point(m_, p); }
-Vec3 Transform::vector(const Vec3& v) const { return identity_ ? v : apply_vector(m_, v); }
-Vec3 Transform::normal(const Vec3& n) const { return identity_ ? n : apply_transposed_vector(inv_, n); }
-Vec3 Transform::inverse_point(const Vec3& p) const { return identity_ ? p : apply_point(inv_, p); }
-Vec3 Transform::inverse_vector(const Vec3& v) const { return identity_ ? v : apply_vector(inv_, v); }
-Vec3 Transform::inverse_normal(const Vec3& n) const { return identity_ ? n : apply_transposed_vector(m_, n); }
 
 Bounds3 Transform::bounds(const Bounds3& b) const {
   if (identity_ || b.empty()) return b;

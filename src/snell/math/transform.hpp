@@ -9,6 +9,24 @@
 
 namespace snell::math {
 
+// Inline: every ray meets them once or twice per object it is tested against.
+inline Vec3 apply_point(const Matrix4& a, const Vec3& p) {
+  const auto& m = a.m;
+  return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+          m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+          m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+}
+inline Vec3 apply_vector(const Matrix4& a, const Vec3& v) {
+  const auto& m = a.m;
+  return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+          m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+}
+inline Vec3 apply_transposed_vector(const Matrix4& a, const Vec3& v) {
+  const auto& m = a.m;
+  return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+          m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
+}
+
 class Transform {
  public:
   Transform() : m_(Matrix4::identity()), inv_(Matrix4::identity()), identity_(true) {}
@@ -30,13 +48,13 @@ class Transform {
   Transform operator*(const Transform& o) const;
   Transform inverse() const { return Transform(inv_, m_); }
 
-  Vec3 point(const Vec3& p) const;
-  Vec3 vector(const Vec3& v) const;
+  Vec3 point(const Vec3& p) const { return identity_ ? p : apply_point(m_, p); }
+  Vec3 vector(const Vec3& v) const { return identity_ ? v : apply_vector(m_, v); }
   /// Transforms a normal by the inverse transpose (not normalised).
-  Vec3 normal(const Vec3& n) const;
-  Vec3 inverse_point(const Vec3& p) const;
-  Vec3 inverse_vector(const Vec3& v) const;
-  Vec3 inverse_normal(const Vec3& n) const;
+  Vec3 normal(const Vec3& n) const { return identity_ ? n : apply_transposed_vector(inv_, n); }
+  Vec3 inverse_point(const Vec3& p) const { return identity_ ? p : apply_point(inv_, p); }
+  Vec3 inverse_vector(const Vec3& v) const { return identity_ ? v : apply_vector(inv_, v); }
+  Vec3 inverse_normal(const Vec3& n) const { return identity_ ? n : apply_transposed_vector(m_, n); }
   /// The ray in the transform's source space; direction is not renormalised, so t is unchanged.
   Ray inverse_ray(const Ray& r) const { return {inverse_point(r.origin), inverse_vector(r.direction), r.time}; }
   Bounds3 bounds(const Bounds3& b) const;
