@@ -82,11 +82,13 @@ class RegisterCodeBuilder {
         case Op::unary:
           n.instruction.op = Op::unary;
           n.instruction.unary = in.unary;
+          n.instruction.kernel = lane_kernel(in.unary);
           n.operands = {pop()};
           break;
         case Op::binary:
           n.instruction.op = Op::binary;
           n.instruction.binary = in.binary;
+          n.instruction.kernel = lane_kernel(in.binary);
           n.operands = pop_n(2);
           break;
         case Op::call:
@@ -168,6 +170,8 @@ class RegisterCodeBuilder {
       code.code_.push_back(in);
     }
     code.result_ = reg[result];
+    for (const RegisterInstruction& in : code.code_)
+      code.vectorised_ = code.vectorised_ && whole_register(in);
     code.lane_constants_.reserve(code.constants_.size() * RegisterCode::kMaxLanes);
     for (double c : code.constants_)
       code.lane_constants_.insert(code.lane_constants_.end(), RegisterCode::kMaxLanes, c);

@@ -7,13 +7,16 @@
 // exactly the operation the stack program would, in the same order, so the values are bit-identical.
 //
 // run_lanes() evaluates the code at up to kMaxLanes points at once: one dispatch per instruction for all
-// points, and the arithmetic on the lanes is a loop the compiler vectorises (SIMD multi-point evaluation,
-// used for an isosurface's normal samples).
+// points, the arithmetic on the lanes is a loop the compiler vectorises, and sin, cos, atan2 and sqrt run
+// as vector kernels (lane_math.hpp; SIMD multi-point evaluation, used for an isosurface's march and normal
+// samples). Those kernels may differ from libm in the last bit or two, so lane values equal scalar values
+// to about 1e-15 relative, not bit for bit, where the code uses them.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "snell/function/builtins.hpp"
 #include "snell/function/function.hpp"
 
 namespace snell::function {
@@ -30,7 +33,28 @@ struct RegisterInstruction {
   Function::Native native = nullptr;
   const Function* callee = nullptr;
   std::uint32_t component = 0;
+  LaneKernel kernel = LaneKernel::none;  // unary, binary: a built-in that run_lanes computes as vectors
 };
+
+/// Whether run_lanes computes `in` on whole registers (the arithmetic, < and >, the built-ins with lane
+/// kernels) rather than one lane at a time through the scalar step.
+inline bool whole_register(const RegisterInstruction& in) {
+  switch (in.op) {
+    case Op::add:
+    case Op::subtract:
+    case Op::multiply:
+    case Op::divide:
+    case Op::negate:
+    case Op::less:
+    case Op::greater:
+      return true;
+    case Op::unary:
+    case Op::binary:
+      return in.kernel != LaneKernel::none;
+    default:
+      return false;
+  }
+}
 
 class RegisterCode {
  public:
@@ -46,6 +70,8 @@ class RegisterCode {
   void run_lanes(const double* const* args, std::size_t lanes, double* out) const;
 
   std::size_t instruction_count() const { return code_.size(); }
+  /// Whether run_lanes computes every instruction on whole registers (whole_register), none lane by lane.
+  bool vectorised() const { return vectorised_; }
   std::size_t constant_count() const { return constants_.size(); }
 
  private:
@@ -60,6 +86,7 @@ class RegisterCode {
   std::vector<RegisterInstruction> code_;
   std::vector<std::uint32_t> arguments_;  // argument registers of native calls and calls
   std::uint32_t result_ = 0;
+  bool vectorised_ = true;
   std::vector<std::shared_ptr<const Function>> callees_;  // keeps call targets alive
 };
 

@@ -94,19 +94,36 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
     gt = g(t);
   }
 
+  // A function whose code runs on whole SIMD registers is evaluated at several points of the ray at once
+  // (about the cost of one point); any other (natives such as noise run lane by lane) one point at a time.
+  constexpr int kLanes = static_cast<int>(function::Function::kMaxLanes);
+  const auto g_lanes = [&](const double* ts, int n, double* out) {
+    evaluations.n += static_cast<std::uint64_t>(n);
+    double xs[kLanes], ys[kLanes], zs[kLanes];
+    for (int i = 0; i < n; ++i) {
+      const Vec3 p = ray.at(ts[i]);
+      xs[i] = p.x, ys[i] = p.y, zs[i] = p.z;
+    }
+    const double* const args[3] = {xs, ys, zs};
+    settings_.function->call_lanes(args, static_cast<std::size_t>(n), out);
+    for (int i = 0; i < n; ++i) out[i] -= settings_.threshold;
+  };
+
   const MarchSettings march{lipschitz, accuracy, 0.1 * accuracy};
   bool more = true;
   double steepest = 0;  // per ray, so the shared maximum is touched once per ray
-  gt = march_roots(
-      g, t, gt, hi, march,
-      [&](double root) {
-        evaluations.n += 4;  // the normal's samples
-        ++evaluations.hits;
-        sink(surface_hit(ray, root));
-        more = ++found < limit;
-        return more;
-      },
-      [&](double slope) { steepest = std::max(steepest, slope); });
+  const auto on_root = [&](double root) {
+    evaluations.n += 4;  // the normal's samples
+    ++evaluations.hits;
+    sink(surface_hit(ray, root));
+    more = ++found < limit;
+    return more;
+  };
+  const auto on_slope = [&](double slope) { steepest = std::max(steepest, slope); };
+  if (settings_.function->vectorised())
+    gt = march_roots_lanes<kLanes>(g, g_lanes, t, gt, hi, march, on_root, on_slope);
+  else
+    gt = march_roots(g, t, gt, hi, march, on_root, on_slope);
   note_slope(steepest / speed);
   if (!more) return;
   if (!settings_.open && exit.t < t_max && gt < 0) sink(exit);

@@ -99,4 +99,54 @@ double march_roots(const G& g, double t, double gt, double hi, const MarchSettin
   return gt;
 }
 
+/// march_roots with g evaluated at up to K points per call, `g_lanes(ts, n, out)` (out[i] = g(ts[i]),
+/// n <= K), for functions whose multi-point evaluation costs much less than n single ones. Each pass
+/// predicts the next K steps of the scalar march, assuming |g| keeps shrinking at the rate of the last step
+/// taken, evaluates them at once, and walks them accepting a step as march_roots does: when it is no
+/// longer than the safe step max(|g| / L, min_step) from its start, or when the Lipschitz balls of its
+/// ends cover it. The first step refused ends the pass and the next pass starts there, so the march
+/// proves exactly what march_roots proves; a wrong prediction only wastes lanes. Where the safe step is
+/// the minimum step (a loose bound L), all K steps are taken in one pass. Roots are refined with g.
+template <int K, typename G, typename GLanes, typename OnRoot, typename OnSlope>
+double march_roots_lanes(const G& g, const GLanes& g_lanes, double t, double gt, double hi,
+                         const MarchSettings& s, OnRoot&& on_root, OnSlope&& on_slope) {
+  const double inverse_lipschitz = 1 / s.lipschitz;
+  const auto covered = [&](double t0, double g0, double t1, double g1) {
+    return std::fabs(g0) + std::fabs(g1) >= s.lipschitz * (t1 - t0);
+  };
+  double approach = 0;  // how fast |g| shrank per unit t over the last step taken
+  while (t < hi) {
+    // Predicted steps: over-relaxed as march_roots while the predicted |g| allows.
+    double ts[K], gs[K];
+    int n = 0;
+    const double rate = std::isnan(approach) ? s.lipschitz : std::clamp(approach, -s.lipschitz, s.lipschitz);
+    const double omega = std::clamp(1.9 / (1 + std::max(rate, 0.0) * inverse_lipschitz), 1.0, 1.9);
+    for (double pt = t, pg = std::fabs(gt); n < K && pt < hi;) {
+      const double reach = pg * inverse_lipschitz;
+      const double step = reach > s.min_step ? omega * reach : s.min_step;
+      pt = std::min(hi, pt + step);  // pt + step, rounded as the walk below rounds t0 + safe
+      ts[n++] = pt;
+      pg = std::max(0.0, pg - rate * step);
+    }
+    g_lanes(ts, n, gs);
+    double t0 = t, g0 = gt;
+    int taken = 0;
+    for (; taken < n; ++taken) {
+      const double t1 = ts[taken], g1 = gs[taken];
+      // As the prediction computed it (min_step first: a NaN g gives the minimum step), so that a
+      // predicted step no longer than the safe one passes this test exactly, however t rounds.
+      const double safe = std::max(s.min_step, std::fabs(g0) * inverse_lipschitz);
+      if (!(t1 <= t0 + safe || covered(t0, g0, t1, g1))) break;
+      on_slope(std::fabs(g1 - g0) / (t1 - t0));
+      approach = (std::fabs(g0) - std::fabs(g1)) / (t1 - t0);
+      if ((g0 < 0) != (g1 < 0) && !on_root(refine_root(g, t0, g0, t1, g1, s.tolerance))) return g1;
+      t0 = t1, g0 = g1;
+    }
+    // The first step refused (it was over-relaxed and not covered): predict no relaxation next time.
+    if (taken == 0) approach = s.lipschitz;
+    t = t0, gt = g0;
+  }
+  return gt;
+}
+
 }  // namespace snell::geometry
