@@ -65,7 +65,7 @@ struct LaneMarch {
   void run(const G& g, double lo, double hi, const MarchSettings& s) {
     const auto g_lanes = [&](const double* ts, int n, double* out) {
       ++passes, points += n;
-      for (int i = 0; i < n; ++i) out[i] = g(ts[i]);
+      for (int i = 0; i < 8; ++i) out[i] = g(ts[i]);
     };
     march_roots_lanes<8>(
         g, g_lanes, lo, g(lo), hi, s,

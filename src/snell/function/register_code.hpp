@@ -16,45 +16,45 @@
 #include <memory>
 #include <vector>
 
-#include "snell/function/builtins.hpp"
 #include "snell/function/function.hpp"
 
 namespace snell::function {
+
+/// How run_lanes computes an instruction: on whole registers (arithmetic, < and >, the built-ins with
+/// lane kernels), or one lane at a time through the scalar step (calls, natives, the rest).
+enum class LaneOp : std::uint8_t {
+  add,
+  subtract,
+  multiply,
+  divide,
+  negate,
+  less,
+  greater,
+  abs,
+  sqr,
+  sqrt,
+  sin,
+  cos,
+  atan2,
+  min,
+  max,
+  by_lane,
+};
 
 /// One operation of register code. Its `op` is a stack-program operator other than constant and
 /// parameter (those become registers); the calls (call, call_component, native) come last in Op, and
 /// take their arguments from a list: registers arguments[a .. a + b).
 struct RegisterInstruction {
   Op op = Op::add;
-  std::uint32_t a = 0;  // first operand's register (calls: first index into the argument list)
-  std::uint32_t b = 0;  // second operand's register (calls: argument count)
+  LaneOp lane = LaneOp::by_lane;  // set when the code is laid out
+  std::uint32_t a = 0;            // first operand's register (calls: first index into the argument list)
+  std::uint32_t b = 0;            // second operand's register (calls: argument count)
   double (*unary)(double) = nullptr;
   double (*binary)(double, double) = nullptr;
   Function::Native native = nullptr;
   const Function* callee = nullptr;
   std::uint32_t component = 0;
-  LaneKernel kernel = LaneKernel::none;  // unary, binary: a built-in that run_lanes computes as vectors
 };
-
-/// Whether run_lanes computes `in` on whole registers (the arithmetic, < and >, the built-ins with lane
-/// kernels) rather than one lane at a time through the scalar step.
-inline bool whole_register(const RegisterInstruction& in) {
-  switch (in.op) {
-    case Op::add:
-    case Op::subtract:
-    case Op::multiply:
-    case Op::divide:
-    case Op::negate:
-    case Op::less:
-    case Op::greater:
-      return true;
-    case Op::unary:
-    case Op::binary:
-      return in.kernel != LaneKernel::none;
-    default:
-      return false;
-  }
-}
 
 class RegisterCode {
  public:
@@ -70,7 +70,7 @@ class RegisterCode {
   void run_lanes(const double* const* args, std::size_t lanes, double* out) const;
 
   std::size_t instruction_count() const { return code_.size(); }
-  /// Whether run_lanes computes every instruction on whole registers (whole_register), none lane by lane.
+  /// Whether run_lanes computes every instruction on whole registers, none lane by lane (LaneOp).
   bool vectorised() const { return vectorised_; }
   std::size_t constant_count() const { return constants_.size(); }
 

@@ -125,67 +125,60 @@ void lane_by_lane(const RegisterInstruction& in, const double* r, const std::uin
   double* dst = r + first * kLanes;
   for (std::size_t i = 0; i < count; ++i, dst += kLanes) {
     const RegisterInstruction& in = code[i];
-    if (!whole_register(in)) {
+    if (in.lane == LaneOp::by_lane) {
       lane_by_lane(in, r, arguments, lanes, dst);
       continue;
     }
     const double* a = r + in.a * kLanes;
     const double* b = r + in.b * kLanes;
-    switch (in.op) {
-      case Op::add:
+    switch (in.lane) {
+      case LaneOp::add:
         each_lane(dst, a, b, std::plus<>{});
         break;
-      case Op::subtract:
+      case LaneOp::subtract:
         each_lane(dst, a, b, std::minus<>{});
         break;
-      case Op::multiply:
+      case LaneOp::multiply:
         each_lane(dst, a, b, std::multiplies<>{});
         break;
-      case Op::divide:
+      case LaneOp::divide:
         each_lane(dst, a, b, std::divides<>{});
         break;
-      case Op::negate:
+      case LaneOp::negate:
         each_lane(dst, a, b, [](double x, double) { return -x; });
         break;
-      case Op::less:
+      case LaneOp::less:
         each_lane(dst, a, b, [](double x, double y) { return truth(x < y); });
         break;
-      case Op::greater:
+      case LaneOp::greater:
         each_lane(dst, a, b, [](double x, double y) { return truth(x > y); });
         break;
-      case Op::unary:
-      case Op::binary:
-        switch (in.kernel) {
-          case LaneKernel::abs:
-            each_lane(dst, a, b, [](double x, double) { return std::fabs(x); });
-            break;
-          case LaneKernel::sqr:
-            each_lane(dst, a, b, [](double x, double) { return x * x; });
-            break;
-          case LaneKernel::sqrt:
-            lanes::sqrt(a, dst);
-            break;
-          case LaneKernel::sin:
-            lanes::sin(a, dst);
-            break;
-          case LaneKernel::cos:
-            lanes::cos(a, dst);
-            break;
-          case LaneKernel::atan2:
-            lanes::atan2(a, b, dst);
-            break;
-          case LaneKernel::min:  // std::min(x, y): y only where y < x, as the scalar built-in
-            each_lane(dst, a, b, [](double x, double y) { return y < x ? y : x; });
-            break;
-          case LaneKernel::max:
-            each_lane(dst, a, b, [](double x, double y) { return x < y ? y : x; });
-            break;
-          case LaneKernel::none:
-            break;  // not reached: whole_register
-        }
+      case LaneOp::abs:
+        each_lane(dst, a, b, [](double x, double) { return std::fabs(x); });
         break;
-      default:
-        break;  // not reached: whole_register
+      case LaneOp::sqr:
+        each_lane(dst, a, b, [](double x, double) { return x * x; });
+        break;
+      case LaneOp::sqrt:
+        lanes::sqrt(a, dst);
+        break;
+      case LaneOp::sin:
+        lanes::sin(a, dst);
+        break;
+      case LaneOp::cos:
+        lanes::cos(a, dst);
+        break;
+      case LaneOp::atan2:
+        lanes::atan2(a, b, dst);
+        break;
+      case LaneOp::min:  // std::min(x, y): y only where y < x, as the scalar built-in
+        each_lane(dst, a, b, [](double x, double y) { return y < x ? y : x; });
+        break;
+      case LaneOp::max:
+        each_lane(dst, a, b, [](double x, double y) { return x < y ? y : x; });
+        break;
+      case LaneOp::by_lane:
+        break;  // handled above
     }
   }
 }
@@ -208,11 +201,18 @@ void RegisterCode::run_lanes(const double* const* args, std::size_t lanes, doubl
   std::memcpy(r, lane_constants_.data(), constants * kLanes * sizeof(double));
   for (std::size_t i = 0; i < arity_; ++i) {
     double* p = r + (constants + i) * kLanes;
-    for (std::size_t l = 0; l < lanes; ++l) p[l] = args[i][l];
-    repeat_first(p, lanes);
+    if (lanes == kLanes) {
+      std::memcpy(p, args[i], kLanes * sizeof(double));  // a fixed size: a few vector moves
+    } else {
+      for (std::size_t l = 0; l < lanes; ++l) p[l] = args[i][l];
+      repeat_first(p, lanes);
+    }
   }
   run_lane_code(code_.data(), code_.size(), r, constants + arity_, arguments_.data(), lanes);
-  std::memcpy(out, r + result_ * kLanes, lanes * sizeof(double));
+  if (lanes == kLanes)
+    std::memcpy(out, r + result_ * kLanes, kLanes * sizeof(double));
+  else
+    std::memcpy(out, r + result_ * kLanes, lanes * sizeof(double));
 }
 
 }  // namespace snell::function

@@ -99,14 +99,17 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   constexpr int kLanes = static_cast<int>(function::Function::kMaxLanes);
   const auto g_lanes = [&](const double* ts, int n, double* out) {
     evaluations.n += static_cast<std::uint64_t>(n);
+    // All lanes filled (ts repeats its last point past n): whole registers cost the same, and the copies
+    // in and out are then of fixed size.
     double xs[kLanes], ys[kLanes], zs[kLanes];
-    for (int i = 0; i < n; ++i) {
-      const Vec3 p = ray.at(ts[i]);
-      xs[i] = p.x, ys[i] = p.y, zs[i] = p.z;
+    for (int i = 0; i < kLanes; ++i) {
+      xs[i] = ray.origin.x + ts[i] * ray.direction.x;
+      ys[i] = ray.origin.y + ts[i] * ray.direction.y;
+      zs[i] = ray.origin.z + ts[i] * ray.direction.z;
     }
     const double* const args[3] = {xs, ys, zs};
-    settings_.function->call_lanes(args, static_cast<std::size_t>(n), out);
-    for (int i = 0; i < n; ++i) out[i] -= settings_.threshold;
+    settings_.function->call_lanes(args, kLanes, out);
+    for (int i = 0; i < kLanes; ++i) out[i] -= settings_.threshold;
   };
 
   const MarchSettings march{lipschitz, accuracy, 0.1 * accuracy};
