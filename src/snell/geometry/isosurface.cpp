@@ -1,6 +1,7 @@
 #include "snell/geometry/isosurface.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,7 +10,41 @@
 
 namespace snell::geometry {
 
-Isosurface::Isosurface(IsosurfaceSettings settings) : settings_(std::move(settings)) {
+namespace {
+
+/// A stretch of a ray that a march proved free of roots, in the isosurface's own space: a ray that runs
+/// back along it need not march again. The case that pays is a light at the camera (a common headlight):
+/// its shadow ray from a surface point retraces, in reverse, the camera ray that found the point, and
+/// without this would march the whole way back to the container. Kept per thread, the last few marches
+/// of any isosurface; a shadow ray follows its camera ray in the same thread.
+struct ProvenSegment {
+  std::uint64_t owner = 0;     // the isosurface's id (0: empty); not its address, which a later one may reuse
+  Vec3 a, ab;                  // from end a to end a + ab
+  double inverse_length2 = 0;  // 1 / |ab|^2
+  bool negative = false;       // f < threshold along it (the inside)
+
+  /// Whether p lies within `tolerance` of the segment.
+  bool near(const Vec3& p, double tolerance) const {
+    const double s = std::clamp(dot(p - a, ab) * inverse_length2, 0.0, 1.0);
+    return length_squared(p - (a + ab * s)) <= tolerance * tolerance;
+  }
+};
+
+constexpr std::size_t kProvenSegments = 8;
+
+struct ProvenSegments {
+  std::array<ProvenSegment, kProvenSegments> entries;
+  std::size_t next = 0;  // the entry to overwrite
+};
+
+thread_local ProvenSegments proven_segments;
+
+std::atomic<std::uint64_t> next_isosurface_id{1};
+
+}  // namespace
+
+Isosurface::Isosurface(IsosurfaceSettings settings)
+    : settings_(std::move(settings)), id_(next_isosurface_id.fetch_add(1, std::memory_order_relaxed)) {
   if (!settings_.function) throw std::invalid_argument("isosurface: missing function");
   if (settings_.function->arity() != 3)
     throw std::invalid_argument("isosurface: the function must take three arguments (x, y, z)");
@@ -81,6 +116,7 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   int found = 0;
 
   double t = lo, gt = g(t);
+  bool stepped_off = false;
   if (entry.t > t_min) {
     // The ray enters the container: where the inside reaches the container wall, the wall is the surface.
     if (!settings_.open && gt < 0) {
@@ -91,8 +127,19 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
     // The ray starts on the surface (a shadow or reflected ray leaving it): step off it first, as POV-Ray
     // does, so that the root it came from is not found again.
     t = std::min(lo + 5 * accuracy, hi);
-    gt = g(t);
+    stepped_off = true;
   }
+
+  // Both ends of what is left within a hair (far below the accuracy) of a stretch already proved free of
+  // roots: so is all of it, as the distance to a segment is convex. The ray's answer is that stretch's.
+  const double hair = 1e-4 * accuracy * speed;
+  const Vec3 from = ray.at(t), to = ray.at(hi);
+  for (const ProvenSegment& p : proven_segments.entries) {
+    if (p.owner != id_ || !p.near(from, hair) || !p.near(to, hair)) continue;
+    if (!settings_.open && exit.t < t_max && p.negative) sink(exit);
+    return;
+  }
+  if (stepped_off) gt = g(t);
 
   // A function whose code runs on whole SIMD registers is evaluated at several points of the ray at once
   // (about the cost of one point); any other (natives such as noise run lane by lane) one point at a time.
@@ -102,22 +149,26 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
     // All lanes filled (ts repeats its last point past n): whole registers cost the same, and the copies
     // in and out are then of fixed size.
     double xs[kLanes], ys[kLanes], zs[kLanes];
-    for (int i = 0; i < kLanes; ++i) {
-      xs[i] = ray.origin.x + ts[i] * ray.direction.x;
-      ys[i] = ray.origin.y + ts[i] * ray.direction.y;
-      zs[i] = ray.origin.z + ts[i] * ray.direction.z;
-    }
+    const Vec3 o = ray.origin, d = ray.direction;  // locals: the stores below cannot alias them
+    for (int i = 0; i < kLanes; ++i) xs[i] = o.x + ts[i] * d.x;
+    for (int i = 0; i < kLanes; ++i) ys[i] = o.y + ts[i] * d.y;
+    for (int i = 0; i < kLanes; ++i) zs[i] = o.z + ts[i] * d.z;
     const double* const args[3] = {xs, ys, zs};
     settings_.function->call_lanes(args, kLanes, out);
-    for (int i = 0; i < kLanes; ++i) out[i] -= settings_.threshold;
+    const double threshold = settings_.threshold;
+    for (int i = 0; i < kLanes; ++i) out[i] -= threshold;
   };
 
   const MarchSettings march{lipschitz, accuracy, 0.1 * accuracy};
   bool more = true;
   double steepest = 0;  // per ray, so the shared maximum is touched once per ray
+  const double start = t;
+  const bool start_negative = gt < 0;
+  double first_root = hi;  // where the stretch proved free of roots ends
   const auto on_root = [&](double root) {
     evaluations.n += 4;  // the normal's samples
     ++evaluations.hits;
+    first_root = std::min(first_root, root);
     sink(surface_hit(ray, root));
     more = ++found < limit;
     return more;
@@ -128,6 +179,14 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   else
     gt = march_roots(g, t, gt, hi, march, on_root, on_slope);
   note_slope(steepest / speed);
+  // Short of the root by the accuracy, the distance within which the march places it.
+  const double proven_end = first_root < hi ? first_root - accuracy : hi;
+  if (proven_end > start) {
+    ProvenSegment& p = proven_segments.entries[proven_segments.next];
+    proven_segments.next = (proven_segments.next + 1) % kProvenSegments;
+    const Vec3 a = ray.at(start), ab = ray.at(proven_end) - a;
+    p = {id_, a, ab, 1 / length_squared(ab), start_negative};
+  }
   if (!more) return;
   if (!settings_.open && exit.t < t_max && gt < 0) sink(exit);
 }

@@ -140,8 +140,9 @@ double march_roots_lanes(const G& g, const GLanes& g_lanes, double t, double gt,
       // As the prediction computed it (min_step first: a NaN g gives the minimum step), so that a
       // predicted step no longer than the safe one passes this test exactly, however t rounds.
       const double safe = std::max(s.min_step, std::fabs(g0) * inverse_lipschitz);
-      taken[i] = t1 <= t0 + safe || std::fabs(g0) + std::fabs(g1) >= s.lipschitz * (t1 - t0);
-      crosses[i] = (g0 < 0) != (g1 < 0);
+      // (| and ^ on bools, not || and !=: no branch, so the loop vectorises.)
+      taken[i] = (t1 <= t0 + safe) | (std::fabs(g0) + std::fabs(g1) >= s.lipschitz * (t1 - t0));
+      crosses[i] = (g0 < 0) ^ (g1 < 0);
       slope[i] = std::fabs(g1 - g0) / (t1 - t0);  // NaN past n (no step), never read there
     }
     int walked = 0;  // steps taken so far in this pass
