@@ -89,11 +89,21 @@ LocalHit Isosurface::surface_hit(const Ray& ray, double t) const {
 template <typename Sink>
 void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Sink&& sink) const {
   const Shape& box = *settings_.container;
-  LocalHit entry, exit;
-  if (!box.intersect(ray, -math::kInfinity, math::kInfinity, entry)) return;
-  if (!box.intersect(ray, entry.t, math::kInfinity, exit)) return;  // grazes the container
-  const double lo = std::max(entry.t, t_min), hi = std::min(exit.t, t_max);
+  double entry_t, exit_t;  // where the ray enters and leaves the container (a graze does neither)
+  if (!box.span(ray, entry_t, exit_t)) return;
+  const double lo = std::max(entry_t, t_min), hi = std::min(exit_t, t_max);
   if (!(lo < hi)) return;
+  // The container's own crossings, with their normals, for the rare ray whose inside reaches a wall.
+  const auto entry = [&] {
+    LocalHit h;
+    box.intersect(ray, -math::kInfinity, math::kInfinity, h);
+    return h;
+  };
+  const auto exit = [&] {
+    LocalHit h;
+    box.intersect(ray, entry_t, math::kInfinity, h);
+    return h;
+  };
 
   const double speed = length(ray.direction);  // local length per unit of t
   const double accuracy = settings_.accuracy;  // in t, as POV-Ray compares ray-parameter intervals
@@ -117,10 +127,10 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
 
   double t = lo, gt = g(t);
   bool stepped_off = false;
-  if (entry.t > t_min) {
+  if (entry_t > t_min) {
     // The ray enters the container: where the inside reaches the container wall, the wall is the surface.
     if (!settings_.open && gt < 0) {
-      sink(entry);
+      sink(entry());
       if (++found >= limit) return;
     }
   } else if (std::fabs(gt) < 4 * lipschitz * accuracy) {
@@ -136,7 +146,7 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   const Vec3 from = ray.at(t), to = ray.at(hi);
   for (const ProvenSegment& p : proven_segments.entries) {
     if (p.owner != id_ || !p.near(from, hair) || !p.near(to, hair)) continue;
-    if (!settings_.open && exit.t < t_max && p.negative) sink(exit);
+    if (!settings_.open && exit_t < t_max && p.negative) sink(exit());
     return;
   }
   if (stepped_off) gt = g(t);
@@ -188,7 +198,7 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
     p = {id_, a, ab, 1 / length_squared(ab), start_negative};
   }
   if (!more) return;
-  if (!settings_.open && exit.t < t_max && gt < 0) sink(exit);
+  if (!settings_.open && exit_t < t_max && gt < 0) sink(exit());
 }
 
 bool Isosurface::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
