@@ -15,8 +15,9 @@ namespace {
 /// A stretch of a ray that a march proved free of roots, in the isosurface's own space: a ray that runs
 /// back along it need not march again. The case that pays is a light at the camera (a common headlight):
 /// its shadow ray from a surface point retraces, in reverse, the camera ray that found the point, and
-/// without this would march the whole way back to the container. Kept per thread, the last few marches
-/// of any isosurface; a shadow ray follows its camera ray in the same thread.
+/// without this would march the whole way back to the container. Kept per thread, the last four marches
+/// of any isosurface (a camera ray, then a shadow ray for each of a few lights); a shadow ray follows its
+/// camera ray in the same thread.
 struct ProvenSegment {
   std::uint64_t owner = 0;     // the isosurface's id (0: empty); not its address, which a later one may reuse
   Vec3 a, ab;                  // from end a to end a + ab
@@ -30,7 +31,7 @@ struct ProvenSegment {
   }
 };
 
-constexpr std::size_t kProvenSegments = 8;
+constexpr std::size_t kProvenSegments = 4;
 
 struct ProvenSegments {
   std::array<ProvenSegment, kProvenSegments> entries;
@@ -142,14 +143,17 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
 
   // Both ends of what is left within a hair (far below the accuracy) of a stretch already proved free of
   // roots: so is all of it, as the distance to a segment is convex. The ray's answer is that stretch's.
-  const double hair = 1e-4 * accuracy * speed;
-  const Vec3 from = ray.at(t), to = ray.at(hi);
-  for (const ProvenSegment& p : proven_segments.entries) {
-    if (p.owner != id_ || !p.near(from, hair) || !p.near(to, hair)) continue;
-    if (!settings_.open && exit_t < t_max && p.negative) sink(exit());
-    return;
+  // Only rays that start on the surface look (a ray from outside retraces nothing in practice).
+  if (stepped_off) {
+    const double hair = 1e-4 * accuracy * speed;
+    const Vec3 from = ray.at(t), to = ray.at(hi);
+    for (const ProvenSegment& p : proven_segments.entries) {
+      if (p.owner != id_ || !p.near(from, hair) || !p.near(to, hair)) continue;
+      if (!settings_.open && exit_t < t_max && p.negative) sink(exit());
+      return;
+    }
+    gt = g(t);
   }
-  if (stepped_off) gt = g(t);
 
   // A function whose code runs on whole SIMD registers is evaluated at several points of the ray at once
   // (about the cost of one point); any other (natives such as noise run lane by lane) one point at a time.
