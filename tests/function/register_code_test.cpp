@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
 
+#include "snell/function/builtins.hpp"
 #include "snell/function/function.hpp"
 #include "snell/function/internals.hpp"
 #include "snell/function/register_code.hpp"
@@ -108,6 +112,55 @@ TEST(RegisterCode, LanesGiveEachPointsValueBitForBit) {
   noise->call_lanes(args, 2, out);
   const double p1[3] = {xs[1], ys[1], zs[1]};
   EXPECT_EQ(out[1], noise->call(p1));
+}
+
+const Builtin& builtin(std::string_view name) {
+  for (const Builtin& b : builtins())
+    if (name == b.name) return b;
+  throw std::invalid_argument("no built-in " + std::string(name));
+}
+
+TEST(RegisterCode, LaneKernelsAgreeWithScalarCalls) {
+  // sqrt(x*x + z*z) - 0.9 + sin(12 * atan2(x, z)) * cos(y) * 0.1: every instruction on whole registers.
+  ProgramBuilder b;
+  b.parameter(0);
+  b.unary(builtin("sqr").unary);
+  b.parameter(2);
+  b.unary(builtin("sqr").unary);
+  b.op(Op::add);
+  b.unary(builtin("sqrt").unary);
+  b.constant(0.9);
+  b.op(Op::subtract);
+  b.constant(12);
+  b.parameter(0);
+  b.parameter(2);
+  b.binary(builtin("atan2").binary);
+  b.op(Op::multiply);
+  b.unary(builtin("sin").unary);
+  b.parameter(1);
+  b.unary(builtin("cos").unary);
+  b.op(Op::multiply);
+  b.constant(0.1);
+  b.op(Op::multiply);
+  b.op(Op::add);
+  const auto f = Function::compiled({"x", "y", "z"}, b.finish());
+  EXPECT_TRUE(f->vectorised());
+  EXPECT_FALSE(Function::compiled({"x", "y", "z"}, twisted())->vectorised());  // cosine is no built-in
+  for (int k = 0; k < 200; ++k) {
+    double xs[8], ys[8], zs[8], out[8];
+    for (int l = 0; l < 8; ++l)
+      xs[l] = std::sin(k + 0.37 * l) * 3, ys[l] = 0.01 * k * l - 2, zs[l] = std::cos(1.7 * k - l) * 2;
+    const double* const args[3] = {xs, ys, zs};
+    const std::size_t lanes = 1 + k % 8;
+    f->call_lanes(args, lanes, out);
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const double point[3] = {xs[l], ys[l], zs[l]};
+      const double want = std::sqrt(xs[l] * xs[l] + zs[l] * zs[l]) - 0.9 +
+                          std::sin(12 * std::atan2(xs[l], zs[l])) * std::cos(ys[l]) * 0.1;
+      EXPECT_NEAR(out[l], f->call(point), 1e-14) << "lane " << l;
+      EXPECT_NEAR(out[l], want, 1e-14);
+    }
+  }
 }
 
 }  // namespace

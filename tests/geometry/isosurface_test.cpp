@@ -60,6 +60,29 @@ TEST(IsosurfaceTest, EvaluationCountFollowsTheLipschitzBound) {
   EXPECT_EQ(head_on.evaluations(), 7u);
 }
 
+TEST(IsosurfaceTest, ARayBackAlongAMarchedOneReusesItsProof) {
+  // A light at the camera: the shadow ray from the hit point back to the camera retraces the camera ray,
+  // whose march proved that stretch free of roots. It gets the same answer (no blocker) without marching:
+  // one evaluation (is it on the surface?) against the march's many.
+  IsosurfaceSettings s = in_box(unit_sphere_sdf(), 2);
+  s.max_gradient = 20;  // a loose bound: the march takes many short steps
+  s.count_work = true;
+  const Isosurface iso(s), fresh(s);
+  LocalHit hit, none;
+  ASSERT_TRUE(iso.intersect({{0.3, 0.2, -5}, {0, 0, 1}, 0}, 1e-9, math::kInfinity, hit));
+  const Vec3 p = Vec3(0.3, 0.2, -5) + Vec3(0, 0, 1) * hit.t;
+  const std::uint64_t before = iso.evaluations();
+  EXPECT_FALSE(iso.intersect({p, {0, 0, -1}, 0}, 1e-9, hit.t, none));
+  EXPECT_EQ(iso.evaluations() - before, 1u);
+  // The same shadow ray on an isosurface that marched nothing yet: the same answer, marched.
+  EXPECT_FALSE(fresh.intersect({p, {0, 0, -1}, 0}, 1e-9, hit.t, none));
+  EXPECT_GT(fresh.evaluations(), 20u);
+  // A ray off that line by more than a hair marches.
+  const std::uint64_t again = iso.evaluations();
+  EXPECT_FALSE(iso.intersect({p + Vec3(1e-5, 0, 0), {0, 0, -1}, 0}, 1e-9, hit.t, none));
+  EXPECT_GT(iso.evaluations() - again, 20u);
+}
+
 TEST(IsosurfaceTest, SphereSdfOffCentreMatchesReferenceVector) {
   IsosurfaceSettings s = in_box(unit_sphere_sdf(), 2);
   s.accuracy = 1e-6;

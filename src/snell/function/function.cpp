@@ -129,6 +129,10 @@ void Function::call_vector(const double* args, double* out) const {
     out[0] = call(args);
 }
 
+bool Function::vectorised() const {
+  return kind_ == Kind::compiled && code_->vectorised();
+}
+
 void Function::call_lanes(const double* const* args, std::size_t lanes, double* out) const {
   if (kind_ == Kind::compiled) return code_->run_lanes(args, lanes, out);
   std::array<double, 64> point{};

@@ -119,6 +119,10 @@ class Function {
   /// value goes to out[l]. A compiled function runs its code once for all points (SIMD lanes).
   void call_lanes(const double* const* args, std::size_t lanes, double* out) const;
   static constexpr std::size_t kMaxLanes = 8;
+  /// Whether call_lanes costs about one call whatever the number of lanes: a compiled function whose code
+  /// runs on whole SIMD registers throughout. Otherwise (natives, calls of pattern functions, built-ins
+  /// without lane kernels) some of it runs lane by lane, and extra lanes cost nearly as much as calls.
+  bool vectorised() const;
 
   /// A compiled function's stack program (what the register code was made from); else null.
   const Program* stack_program() const { return kind_ == Kind::compiled ? &program_ : nullptr; }

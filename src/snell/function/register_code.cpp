@@ -6,6 +6,7 @@
 #include <tuple>
 #include <utility>
 
+#include "snell/function/builtins.hpp"
 #include "snell/function/register_step.hpp"
 
 namespace snell::function {
@@ -26,6 +27,51 @@ struct Node {
   std::vector<std::uint32_t> operands;
   std::shared_ptr<const Function> callee;
 };
+
+LaneOp lane_op(const RegisterInstruction& in) {
+  switch (in.op) {
+    case Op::add:
+      return LaneOp::add;
+    case Op::subtract:
+      return LaneOp::subtract;
+    case Op::multiply:
+      return LaneOp::multiply;
+    case Op::divide:
+      return LaneOp::divide;
+    case Op::negate:
+      return LaneOp::negate;
+    case Op::less:
+      return LaneOp::less;
+    case Op::greater:
+      return LaneOp::greater;
+    case Op::unary:
+    case Op::binary:
+      switch (in.op == Op::unary ? lane_kernel(in.unary) : lane_kernel(in.binary)) {
+        case LaneKernel::abs:
+          return LaneOp::abs;
+        case LaneKernel::sqr:
+          return LaneOp::sqr;
+        case LaneKernel::sqrt:
+          return LaneOp::sqrt;
+        case LaneKernel::sin:
+          return LaneOp::sin;
+        case LaneKernel::cos:
+          return LaneOp::cos;
+        case LaneKernel::atan2:
+          return LaneOp::atan2;
+        case LaneKernel::min:
+          return LaneOp::min;
+        case LaneKernel::max:
+          return LaneOp::max;
+        case LaneKernel::none:
+          break;
+      }
+      break;
+    default:
+      break;
+  }
+  return LaneOp::by_lane;
+}
 
 using NodeKey = std::tuple<int, int, std::uint64_t, std::uintptr_t, std::uintptr_t, std::uintptr_t,
                            std::uintptr_t, std::uint32_t, std::vector<std::uint32_t>>;
@@ -168,6 +214,10 @@ class RegisterCodeBuilder {
       code.code_.push_back(in);
     }
     code.result_ = reg[result];
+    for (RegisterInstruction& in : code.code_) {
+      in.lane = lane_op(in);
+      code.vectorised_ = code.vectorised_ && in.lane != LaneOp::by_lane;
+    }
     code.lane_constants_.reserve(code.constants_.size() * RegisterCode::kMaxLanes);
     for (double c : code.constants_)
       code.lane_constants_.insert(code.lane_constants_.end(), RegisterCode::kMaxLanes, c);

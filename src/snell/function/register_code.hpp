@@ -7,8 +7,10 @@
 // exactly the operation the stack program would, in the same order, so the values are bit-identical.
 //
 // run_lanes() evaluates the code at up to kMaxLanes points at once: one dispatch per instruction for all
-// points, and the arithmetic on the lanes is a loop the compiler vectorises (SIMD multi-point evaluation,
-// used for an isosurface's normal samples).
+// points, the arithmetic on the lanes is a loop the compiler vectorises, and sin, cos, atan2 and sqrt run
+// as vector kernels (lane_math.hpp; SIMD multi-point evaluation, used for an isosurface's march and normal
+// samples). Those kernels may differ from libm in the last bit or two, so lane values equal scalar values
+// to about 1e-15 relative, not bit for bit, where the code uses them.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -18,13 +20,35 @@
 
 namespace snell::function {
 
+/// How run_lanes computes an instruction: on whole registers (arithmetic, < and >, the built-ins with
+/// lane kernels), or one lane at a time through the scalar step (calls, natives, the rest).
+enum class LaneOp : std::uint8_t {
+  add,
+  subtract,
+  multiply,
+  divide,
+  negate,
+  less,
+  greater,
+  abs,
+  sqr,
+  sqrt,
+  sin,
+  cos,
+  atan2,
+  min,
+  max,
+  by_lane,
+};
+
 /// One operation of register code. Its `op` is a stack-program operator other than constant and
 /// parameter (those become registers); the calls (call, call_component, native) come last in Op, and
 /// take their arguments from a list: registers arguments[a .. a + b).
 struct RegisterInstruction {
   Op op = Op::add;
-  std::uint32_t a = 0;  // first operand's register (calls: first index into the argument list)
-  std::uint32_t b = 0;  // second operand's register (calls: argument count)
+  LaneOp lane = LaneOp::by_lane;  // set when the code is laid out
+  std::uint32_t a = 0;            // first operand's register (calls: first index into the argument list)
+  std::uint32_t b = 0;            // second operand's register (calls: argument count)
   double (*unary)(double) = nullptr;
   double (*binary)(double, double) = nullptr;
   Function::Native native = nullptr;
@@ -46,6 +70,8 @@ class RegisterCode {
   void run_lanes(const double* const* args, std::size_t lanes, double* out) const;
 
   std::size_t instruction_count() const { return code_.size(); }
+  /// Whether run_lanes computes every instruction on whole registers, none lane by lane (LaneOp).
+  bool vectorised() const { return vectorised_; }
   std::size_t constant_count() const { return constants_.size(); }
 
  private:
@@ -60,6 +86,7 @@ class RegisterCode {
   std::vector<RegisterInstruction> code_;
   std::vector<std::uint32_t> arguments_;  // argument registers of native calls and calls
   std::uint32_t result_ = 0;
+  bool vectorised_ = true;
   std::vector<std::shared_ptr<const Function>> callees_;  // keeps call targets alive
 };
 

@@ -13,14 +13,14 @@ Bounds3 Box::bounds() const {
   return {lo_, hi_};
 }
 
-void Box::gather(const Ray& ray, HitBuffer<2>& hits) const {
+bool Box::slabs(const Ray& ray, double& t0, double& t1, int& axis0, int& axis1) const {
   // Slab method (Kay & Kajiya 1986), remembering which slab gave the entry and the exit.
-  double t0 = -math::kInfinity, t1 = math::kInfinity;
-  int axis0 = -1, axis1 = -1;
+  t0 = -math::kInfinity, t1 = math::kInfinity;
+  axis0 = -1, axis1 = -1;
   for (int a = 0; a < 3; ++a) {
     const double d = ray.direction[a];
     if (d == 0) {
-      if (ray.origin[a] < lo_[a] || ray.origin[a] > hi_[a]) return;
+      if (ray.origin[a] < lo_[a] || ray.origin[a] > hi_[a]) return false;
       continue;
     }
     double tn = (lo_[a] - ray.origin[a]) / d;
@@ -35,7 +35,19 @@ void Box::gather(const Ray& ray, HitBuffer<2>& hits) const {
       axis1 = a;
     }
   }
-  if (t0 > t1 || axis0 < 0) return;
+  return !(t0 > t1 || axis0 < 0);
+}
+
+bool Box::span(const Ray& ray, double& t_entry, double& t_exit) const {
+  int axis0, axis1;
+  // As two intersect calls would find them: the second crossing must lie strictly beyond the first.
+  return slabs(ray, t_entry, t_exit, axis0, axis1) && t_exit > t_entry;
+}
+
+void Box::gather(const Ray& ray, HitBuffer<2>& hits) const {
+  double t0, t1;
+  int axis0, axis1;
+  if (!slabs(ray, t0, t1, axis0, axis1)) return;
   const auto make = [&](double t, int axis, double sign) {
     LocalHit h;
     h.t = t;

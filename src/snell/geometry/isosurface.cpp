@@ -1,6 +1,7 @@
 #include "snell/geometry/isosurface.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,7 +10,42 @@
 
 namespace snell::geometry {
 
-Isosurface::Isosurface(IsosurfaceSettings settings) : settings_(std::move(settings)) {
+namespace {
+
+/// A stretch of a ray that a march proved free of roots, in the isosurface's own space: a ray that runs
+/// back along it need not march again. The case that pays is a light at the camera (a common headlight):
+/// its shadow ray from a surface point retraces, in reverse, the camera ray that found the point, and
+/// without this would march the whole way back to the container. Kept per thread, the last four marches
+/// of any isosurface (a camera ray, then a shadow ray for each of a few lights); a shadow ray follows its
+/// camera ray in the same thread.
+struct ProvenSegment {
+  std::uint64_t owner = 0;     // the isosurface's id (0: empty); not its address, which a later one may reuse
+  Vec3 a, ab;                  // from end a to end a + ab
+  double inverse_length2 = 0;  // 1 / |ab|^2
+  bool negative = false;       // f < threshold along it (the inside)
+
+  /// Whether p lies within `tolerance` of the segment.
+  bool near(const Vec3& p, double tolerance) const {
+    const double s = std::clamp(dot(p - a, ab) * inverse_length2, 0.0, 1.0);
+    return length_squared(p - (a + ab * s)) <= tolerance * tolerance;
+  }
+};
+
+constexpr std::size_t kProvenSegments = 4;
+
+struct ProvenSegments {
+  std::array<ProvenSegment, kProvenSegments> entries;
+  std::size_t next = 0;  // the entry to overwrite
+};
+
+thread_local ProvenSegments proven_segments;
+
+std::atomic<std::uint64_t> next_isosurface_id{1};
+
+}  // namespace
+
+Isosurface::Isosurface(IsosurfaceSettings settings)
+    : settings_(std::move(settings)), id_(next_isosurface_id.fetch_add(1, std::memory_order_relaxed)) {
   if (!settings_.function) throw std::invalid_argument("isosurface: missing function");
   if (settings_.function->arity() != 3)
     throw std::invalid_argument("isosurface: the function must take three arguments (x, y, z)");
@@ -54,11 +90,21 @@ LocalHit Isosurface::surface_hit(const Ray& ray, double t) const {
 template <typename Sink>
 void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Sink&& sink) const {
   const Shape& box = *settings_.container;
-  LocalHit entry, exit;
-  if (!box.intersect(ray, -math::kInfinity, math::kInfinity, entry)) return;
-  if (!box.intersect(ray, entry.t, math::kInfinity, exit)) return;  // grazes the container
-  const double lo = std::max(entry.t, t_min), hi = std::min(exit.t, t_max);
+  double entry_t, exit_t;  // where the ray enters and leaves the container (a graze does neither)
+  if (!box.span(ray, entry_t, exit_t)) return;
+  const double lo = std::max(entry_t, t_min), hi = std::min(exit_t, t_max);
   if (!(lo < hi)) return;
+  // The container's own crossings, with their normals, for the rare ray whose inside reaches a wall.
+  const auto entry = [&] {
+    LocalHit h;
+    box.intersect(ray, -math::kInfinity, math::kInfinity, h);
+    return h;
+  };
+  const auto exit = [&] {
+    LocalHit h;
+    box.intersect(ray, entry_t, math::kInfinity, h);
+    return h;
+  };
 
   const double speed = length(ray.direction);  // local length per unit of t
   const double accuracy = settings_.accuracy;  // in t, as POV-Ray compares ray-parameter intervals
@@ -81,35 +127,82 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   int found = 0;
 
   double t = lo, gt = g(t);
-  if (entry.t > t_min) {
+  bool stepped_off = false;
+  if (entry_t > t_min) {
     // The ray enters the container: where the inside reaches the container wall, the wall is the surface.
     if (!settings_.open && gt < 0) {
-      sink(entry);
+      sink(entry());
       if (++found >= limit) return;
     }
   } else if (std::fabs(gt) < 4 * lipschitz * accuracy) {
     // The ray starts on the surface (a shadow or reflected ray leaving it): step off it first, as POV-Ray
     // does, so that the root it came from is not found again.
     t = std::min(lo + 5 * accuracy, hi);
+    stepped_off = true;
+  }
+
+  // Both ends of what is left within a hair (far below the accuracy) of a stretch already proved free of
+  // roots: so is all of it, as the distance to a segment is convex. The ray's answer is that stretch's.
+  // Only rays that start on the surface look (a ray from outside retraces nothing in practice).
+  if (stepped_off) {
+    const double hair = 1e-4 * accuracy * speed;
+    const Vec3 from = ray.at(t), to = ray.at(hi);
+    for (const ProvenSegment& p : proven_segments.entries) {
+      if (p.owner != id_ || !p.near(from, hair) || !p.near(to, hair)) continue;
+      if (!settings_.open && exit_t < t_max && p.negative) sink(exit());
+      return;
+    }
     gt = g(t);
   }
+
+  // A function whose code runs on whole SIMD registers is evaluated at several points of the ray at once
+  // (about the cost of one point); any other (natives such as noise run lane by lane) one point at a time.
+  constexpr int kLanes = static_cast<int>(function::Function::kMaxLanes);
+  const auto g_lanes = [&](const double* ts, int n, double* out) {
+    evaluations.n += static_cast<std::uint64_t>(n);
+    // All lanes filled (ts repeats its last point past n): whole registers cost the same, and the copies
+    // in and out are then of fixed size.
+    double xs[kLanes], ys[kLanes], zs[kLanes];
+    const Vec3 o = ray.origin, d = ray.direction;  // locals: the stores below cannot alias them
+    for (int i = 0; i < kLanes; ++i) xs[i] = o.x + ts[i] * d.x;
+    for (int i = 0; i < kLanes; ++i) ys[i] = o.y + ts[i] * d.y;
+    for (int i = 0; i < kLanes; ++i) zs[i] = o.z + ts[i] * d.z;
+    const double* const args[3] = {xs, ys, zs};
+    settings_.function->call_lanes(args, kLanes, out);
+    const double threshold = settings_.threshold;
+    for (int i = 0; i < kLanes; ++i) out[i] -= threshold;
+  };
 
   const MarchSettings march{lipschitz, accuracy, 0.1 * accuracy};
   bool more = true;
   double steepest = 0;  // per ray, so the shared maximum is touched once per ray
-  gt = march_roots(
-      g, t, gt, hi, march,
-      [&](double root) {
-        evaluations.n += 4;  // the normal's samples
-        ++evaluations.hits;
-        sink(surface_hit(ray, root));
-        more = ++found < limit;
-        return more;
-      },
-      [&](double slope) { steepest = std::max(steepest, slope); });
+  const double start = t;
+  const bool start_negative = gt < 0;
+  double first_root = hi;  // where the stretch proved free of roots ends
+  const auto on_root = [&](double root) {
+    evaluations.n += 4;  // the normal's samples
+    ++evaluations.hits;
+    first_root = std::min(first_root, root);
+    sink(surface_hit(ray, root));
+    more = ++found < limit;
+    return more;
+  };
+  const auto on_slope = [&](double slope) { steepest = std::max(steepest, slope); };
+  if (settings_.function->vectorised())
+    gt = march_roots_lanes<kLanes>(g, g_lanes, t, gt, hi, march, on_root, on_slope);
+  else
+    gt = march_roots(g, t, gt, hi, march, on_root, on_slope);
   note_slope(steepest / speed);
+  // Short of the root by the accuracy, the distance within which the march places it.
+  const double proven_end = first_root < hi ? first_root - accuracy : hi;
+  if (proven_end > start) {
+    ProvenSegment& p = proven_segments.entries[proven_segments.next];
+    proven_segments.next = (proven_segments.next + 1) % kProvenSegments;
+    const Vec3 a = ray.at(start), ab = ray.at(proven_end) - a;
+    p = {id_, a, ab, 1 / length_squared(ab), start_negative};
+  }
   if (!more) return;
-  if (!settings_.open && exit.t < t_max && gt < 0) sink(exit);
+  if (!settings_.open && exit_t < t_max && gt < 0) sink(exit());
 }
 
 bool Isosurface::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {

@@ -65,6 +65,7 @@ class Isosurface final : public Shape {
   void note_slope(double slope) const;
 
   IsosurfaceSettings settings_;
+  std::uint64_t id_;  // unique to this isosurface: the key of what its marches proved (isosurface.cpp)
   mutable std::atomic<double> steepest_{0};
   mutable std::atomic<std::uint64_t> evaluations_{0};
   mutable std::atomic<std::uint64_t> rays_{0};

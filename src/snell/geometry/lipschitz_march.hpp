@@ -99,4 +99,72 @@ double march_roots(const G& g, double t, double gt, double hi, const MarchSettin
   return gt;
 }
 
+/// march_roots with g evaluated at K points per call, `g_lanes(ts, n, out)`: out[i] = g(ts[i]) for all
+/// i < K, of which the first n (<= K) are distinct and the rest repeat ts[n - 1] (so that the evaluation
+/// can run on whole registers), for functions whose multi-point evaluation costs much less than n single
+/// ones. Each pass predicts the next K steps of the scalar march, assuming |g| keeps shrinking at the rate of
+/// the last step taken, evaluates them at once, and walks them accepting a step as march_roots does: when it
+/// is no longer than the safe step max(|g| / L, min_step) from its start, or when the Lipschitz balls of its
+/// ends cover it. The first step refused ends the pass and the next pass starts there, so the march
+/// proves exactly what march_roots proves; a wrong prediction only wastes lanes. Where the safe step is
+/// the minimum step (a loose bound L), all K steps are taken in one pass. Roots are refined with g.
+template <int K, typename G, typename GLanes, typename OnRoot, typename OnSlope>
+double march_roots_lanes(const G& g, const GLanes& g_lanes, double t, double gt, double hi,
+                         const MarchSettings& s, OnRoot&& on_root, OnSlope&& on_slope) {
+  const double inverse_lipschitz = 1 / s.lipschitz;
+  double approach = 0;  // how fast |g| shrank per unit t over the last step taken
+  double steepest = 0;  // the steepest step taken, |dg| / dt
+  while (t < hi) {
+    // Predicted steps: over-relaxed as march_roots while the predicted |g| allows.
+    double ts[K], gs[K];
+    int n = 0;
+    const double rate = std::isnan(approach) ? s.lipschitz : std::clamp(approach, -s.lipschitz, s.lipschitz);
+    const double omega = std::clamp(1.9 / (1 + std::max(rate, 0.0) * inverse_lipschitz), 1.0, 1.9);
+    for (double pt = t, pg = std::fabs(gt); n < K && pt < hi;) {
+      const double reach = pg * inverse_lipschitz;
+      const double step = reach > s.min_step ? omega * reach : s.min_step;
+      pt = std::min(hi, pt + step);  // pt + step, rounded as the walk below rounds t0 + safe
+      ts[n++] = pt;
+      pg = std::max(0.0, pg - rate * step);
+    }
+    for (int i = n; i < K; ++i) ts[i] = ts[n - 1];
+    g_lanes(ts, n, gs);
+    // Every step of the pass at once (fixed-length loops over arrays, which the compiler vectorises): its
+    // start, whether the scalar march's test accepts it, whether g changes sign over it, its slope.
+    double t0s[K], g0s[K], slope[K];
+    bool taken[K], crosses[K];
+    t0s[0] = t, g0s[0] = gt;
+    for (int i = 1; i < K; ++i) t0s[i] = ts[i - 1], g0s[i] = gs[i - 1];
+    for (int i = 0; i < K; ++i) {
+      const double t0 = t0s[i], g0 = g0s[i], t1 = ts[i], g1 = gs[i];
+      // As the prediction computed it (min_step first: a NaN g gives the minimum step), so that a
+      // predicted step no longer than the safe one passes this test exactly, however t rounds.
+      const double safe = std::max(s.min_step, std::fabs(g0) * inverse_lipschitz);
+      // (| and ^ on bools, not || and !=: no branch, so the loop vectorises.)
+      taken[i] = (t1 <= t0 + safe) | (std::fabs(g0) + std::fabs(g1) >= s.lipschitz * (t1 - t0));
+      crosses[i] = (g0 < 0) ^ (g1 < 0);
+      slope[i] = std::fabs(g1 - g0) / (t1 - t0);  // NaN past n (no step), never read there
+    }
+    int walked = 0;  // steps taken so far in this pass
+    while (walked < n && taken[walked]) {
+      steepest = std::max(steepest, slope[walked]);
+      if (crosses[walked] &&
+          !on_root(refine_root(g, t0s[walked], g0s[walked], ts[walked], gs[walked], s.tolerance))) {
+        on_slope(steepest);
+        return gs[walked];
+      }
+      ++walked;
+    }
+    if (walked > 0) {
+      approach =
+          (std::fabs(g0s[walked - 1]) - std::fabs(gs[walked - 1])) / (ts[walked - 1] - t0s[walked - 1]);
+      t = ts[walked - 1], gt = gs[walked - 1];
+    } else {
+      approach = s.lipschitz;  // the first step refused (over-relaxed, not covered): no relaxation next
+    }
+  }
+  on_slope(steepest);
+  return gt;
+}
+
 }  // namespace snell::geometry

@@ -44,6 +44,10 @@ class Shape {
   virtual bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const = 0;
   /// Appends every crossing with t in (t_min, t_max), in increasing t (for CSG and filtered shadows).
   virtual void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const = 0;
+  /// The parameters where the ray first crosses the shape and next crosses it again, over all t: for a
+  /// convex shape, where it enters and leaves (an isosurface's container). False when there is no second
+  /// crossing (a miss, or a graze). By default two calls of intersect; shapes override it with one solve.
+  virtual bool span(const Ray& ray, double& t_entry, double& t_exit) const;
   /// Whether `p` (shape space) lies inside the solid. Open/flat shapes answer as POV-Ray does.
   virtual bool inside(const Vec3& p) const = 0;
   /// Whether inside() is false everywhere outside bounds(), so that a box test can answer it there. Not

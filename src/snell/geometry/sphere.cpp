@@ -59,6 +59,11 @@ void Sphere::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits)
   if (t1 > t_min && t1 < t_max && t1 != t0) hits.push_back(make_hit(ray, t1));
 }
 
+bool Sphere::span(const Ray& ray, double& t_entry, double& t_exit) const {
+  // As two intersect calls would find them: the second crossing must lie strictly beyond the first.
+  return roots(ray, t_entry, t_exit) && t_exit > t_entry;
+}
+
 bool Sphere::inside(const Vec3& p) const {
   return length_squared(p - center_) < radius_ * radius_;
 }

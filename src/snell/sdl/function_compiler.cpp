@@ -3,60 +3,15 @@
 // floats are folded in as constants at compile time, as POV-Ray does. The function language has the float
 // operators + - * / (no `^`: POV-Ray 3.7 rejects it), comparisons, & | ! and the float built-ins; there is
 // no `?:` (POV-Ray rejects it too; select() takes its place).
-#include <cmath>
 #include <span>
 
+#include "snell/function/builtins.hpp"
 #include "snell/function/internals.hpp"
-#include "snell/math/constants.hpp"
 #include "snell/sdl/parser.hpp"
 
 namespace snell::sdl {
 
 namespace {
-
-struct Builtin {
-  const char* name;
-  double (*unary)(double);
-  double (*binary)(double, double);
-};
-
-// Function-language built-ins (reference "Float Functions"; log is base 10, ln natural, int truncates).
-const Builtin kBuiltins[] = {
-    {"abs", [](double a) { return std::fabs(a); }, nullptr},
-    {"acos", [](double a) { return std::acos(a); }, nullptr},
-    {"acosh", [](double a) { return std::acosh(a); }, nullptr},
-    {"asin", [](double a) { return std::asin(a); }, nullptr},
-    {"asinh", [](double a) { return std::asinh(a); }, nullptr},
-    {"atan", [](double a) { return std::atan(a); }, nullptr},
-    {"atanh", [](double a) { return std::atanh(a); }, nullptr},
-    {"ceil", [](double a) { return std::ceil(a); }, nullptr},
-    {"cos", [](double a) { return std::cos(a); }, nullptr},
-    {"cosh", [](double a) { return std::cosh(a); }, nullptr},
-    {"degrees", [](double a) { return a * 180 / math::kPi; }, nullptr},
-    {"exp", [](double a) { return std::exp(a); }, nullptr},
-    {"floor", [](double a) { return std::floor(a); }, nullptr},
-    {"int", [](double a) { return std::trunc(a); }, nullptr},
-    {"ln", [](double a) { return std::log(a); }, nullptr},
-    {"log", [](double a) { return std::log10(a); }, nullptr},
-    {"radians", [](double a) { return a * math::kPi / 180; }, nullptr},
-    {"sin", [](double a) { return std::sin(a); }, nullptr},
-    {"sinh", [](double a) { return std::sinh(a); }, nullptr},
-    {"sqr", [](double a) { return a * a; }, nullptr},
-    {"sqrt", [](double a) { return std::sqrt(a); }, nullptr},
-    {"tan", [](double a) { return std::tan(a); }, nullptr},
-    {"tanh", [](double a) { return std::tanh(a); }, nullptr},
-    {"atan2", nullptr, [](double a, double b) { return std::atan2(a, b); }},
-    {"pow", nullptr, [](double a, double b) { return std::pow(a, b); }},
-    {"mod", nullptr, [](double a, double b) { return std::fmod(a, b); }},
-    {"div", nullptr, [](double a, double b) { return std::trunc(a / b); }},
-};
-
-double min2(double a, double b) {
-  return std::min(a, b);
-}
-double max2(double a, double b) {
-  return std::max(a, b);
-}
 
 // select(a, b, c): b if a < 0 else c; select(a, b, c, d): b if a < 0, c if a == 0, d if a > 0.
 const std::shared_ptr<const function::Function>& select3() {
@@ -221,7 +176,8 @@ class FunctionCompiler {
       p_.raw_next();
       const std::uint32_t n = arguments(w);
       if (n < 1) p_.fail(t.where, w + " needs at least one argument");
-      for (std::uint32_t i = 1; i < n; ++i) out_.binary(w == "min" ? min2 : max2);
+      for (std::uint32_t i = 1; i < n; ++i)
+        out_.binary(w == "min" ? function::builtin_min : function::builtin_max);
       return;
     }
     if (w == "select") {
@@ -231,7 +187,7 @@ class FunctionCompiler {
       out_.call(n == 3 ? select3() : select4(), n);
       return;
     }
-    for (const Builtin& b : kBuiltins) {
+    for (const function::Builtin& b : function::builtins()) {
       if (w != b.name) continue;
       p_.raw_next();
       const std::uint32_t want = b.unary ? 1 : 2;
