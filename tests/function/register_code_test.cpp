@@ -3,10 +3,12 @@
 // evaluated at once.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "snell/function/builtins.hpp"
@@ -161,6 +163,85 @@ TEST(RegisterCode, LaneKernelsAgreeWithScalarCalls) {
       EXPECT_NEAR(out[l], want, 1e-14);
     }
   }
+}
+
+/// Arguments for a native at 8 points: x, y, z spread over [-2, 2], the extra parameters as given.
+struct NativeLanes {
+  std::vector<std::vector<double>> columns;
+  std::vector<const double*> pointers;
+  NativeLanes(int seed, const std::vector<double>& extra) {
+    for (int i = 0; i < 3; ++i) {
+      columns.emplace_back();
+      for (int l = 0; l < 8; ++l) columns.back().push_back(2 * std::sin(seed * 0.71 + l * 1.3 + i * 2.1));
+    }
+    for (double e : extra) columns.emplace_back(8, e);
+    for (const auto& c : columns) pointers.push_back(c.data());
+  }
+  std::vector<double> point(int l) const {
+    std::vector<double> p;
+    for (const auto& c : columns) p.push_back(c[l]);
+    return p;
+  }
+};
+
+TEST(RegisterCode, NativesWithLaneEntriesGiveTheOnePointValues) {
+  // Number, extra parameters; the angles (47 f_ph, 69 f_th) use the vector atan2, within 2 ulp of libm.
+  const std::vector<std::pair<int, std::vector<double>>> natives = {
+      {17, {1, 2, 0.5}}, {47, {}},  {57, {}},        {60, {0.15, 0.7, 1, 0.7}},
+      {61, {1}},         {69, {}},  {70, {1, 0.35}}, {76, {}},
+      {78, {1}},         {78, {2}}, {78, {3}}};
+  for (const auto& [number, extra] : natives) {
+    const auto f = internal_function(number);
+    ASSERT_NE(f->lane_native_function(), nullptr) << f->name();
+    EXPECT_TRUE(f->vectorised()) << f->name();
+    const bool angle = number == 47 || number == 69;
+    for (int seed = 0; seed < 50; ++seed) {
+      const NativeLanes lanes(seed, extra);
+      for (std::size_t count : {3u, 8u}) {
+        double out[8];
+        f->call_lanes(lanes.pointers.data(), count, out);
+        for (std::size_t l = 0; l < count; ++l) {
+          const double one = f->call(lanes.point(static_cast<int>(l)).data());
+          if (angle)
+            EXPECT_NEAR(out[l], one, 1e-15 * std::max(1.0, std::fabs(one))) << f->name();
+          else
+            EXPECT_EQ(out[l], one) << f->name() << " lane " << l;
+        }
+      }
+    }
+  }
+}
+
+TEST(RegisterCode, FunctionsCallingLaneNativesRunOnWholeRegisters) {
+  // f_torus(x, y, z, 1, 0.35) - f_noise3d(5x, 5y, 5z) * 0.2: both natives have lane entries.
+  ProgramBuilder b;
+  b.parameter(0);
+  b.parameter(1);
+  b.parameter(2);
+  b.constant(1);
+  b.constant(0.35);
+  b.call(internal_function(70), 5);
+  for (std::uint32_t i = 0; i < 3; ++i) {
+    b.parameter(i);
+    b.constant(5);
+    b.op(Op::multiply);
+  }
+  b.call(internal_function(76), 3);
+  b.constant(0.2);
+  b.op(Op::multiply);
+  b.op(Op::subtract);
+  const auto f = Function::compiled({"x", "y", "z"}, b.finish());
+  EXPECT_TRUE(f->vectorised());
+  for (int seed = 0; seed < 100; ++seed) {
+    const NativeLanes lanes(seed, {});
+    const std::size_t count = 1 + seed % 8;
+    double out[8];
+    f->call_lanes(lanes.pointers.data(), count, out);
+    for (std::size_t l = 0; l < count; ++l)
+      EXPECT_EQ(out[l], f->call(lanes.point(static_cast<int>(l)).data())) << "lane " << l;
+  }
+  // A native without a lane entry still goes lane by lane.
+  EXPECT_FALSE(internal_function(25)->vectorised());  // f_helix1
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include "snell/texture/povray_noise.hpp"
 
@@ -56,6 +58,40 @@ TEST(PovRayNoise, StaysInUnitIntervalFarFromOrigin) {
     EXPECT_GE(n, 0.0);
     EXPECT_LE(n, 1.0);
   }
+}
+
+}  // namespace
+
+namespace {
+
+using snell::texture::kNoiseLanes;
+using snell::texture::povray_noise_lanes;
+
+/// Every lane of the multi-point noise equals the one-point noise bit for bit, for every generator, over
+/// points near and far from the origin, on both sides of lattice planes (including POV-Ray's 1e-10 rounding
+/// of negative coordinates) and the clamped extremes.
+TEST(PovRayNoise, LanesEqualOnePointCalls) {
+  std::vector<double> coordinates;
+  for (int k = 0; k < 400; ++k) coordinates.push_back(std::sin(k * 1.37) * std::pow(10.0, k % 7 - 2));
+  for (double c : {0.0, -0.0, 1.0, -1.0, -3.0, -3.0 + 5e-11, -3.0 - 5e-11, 2.5, -1e9, 1e9, 4e9})
+    coordinates.push_back(c);
+  while (coordinates.size() % kNoiseLanes) coordinates.push_back(0.25);
+  for (NoiseGenerator g : {NoiseGenerator::original, NoiseGenerator::range_corrected, NoiseGenerator::perlin})
+    for (std::size_t i = 0; i < coordinates.size(); i += kNoiseLanes) {
+      double x[kNoiseLanes], y[kNoiseLanes], z[kNoiseLanes], out[kNoiseLanes];
+      for (int l = 0; l < kNoiseLanes; ++l) {
+        x[l] = coordinates[i + l];
+        y[l] = coordinates[(i + 3 * l + 1) % coordinates.size()];
+        z[l] = -coordinates[(i + 5 * l + 2) % coordinates.size()];
+      }
+      povray_noise_lanes(x, y, z, out, g);
+      for (int l = 0; l < kNoiseLanes; ++l) {
+        const double one = povray_noise({x[l], y[l], z[l]}, g);
+        EXPECT_EQ(std::memcmp(&out[l], &one, sizeof one), 0)
+            << "generator " << static_cast<int>(g) << " at " << x[l] << ", " << y[l] << ", " << z[l] << ": "
+            << out[l] << " against " << one;
+      }
+    }
 }
 
 }  // namespace

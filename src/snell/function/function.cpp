@@ -66,12 +66,14 @@ std::shared_ptr<const Function> Function::compiled(std::vector<std::string> para
   return f;
 }
 
-std::shared_ptr<const Function> Function::native(std::string name, std::size_t arity, Native fn) {
+std::shared_ptr<const Function> Function::native(std::string name, std::size_t arity, Native fn,
+                                                 LaneNative lanes) {
   auto f = std::make_shared<Function>();
   f->kind_ = Kind::native;
   f->name_ = std::move(name);
   f->arity_ = arity;
   f->native_ = fn;
+  f->lane_native_ = lanes;
   return f;
 }
 
@@ -130,17 +132,55 @@ void Function::call_vector(const double* args, double* out) const {
 }
 
 bool Function::vectorised() const {
-  return kind_ == Kind::compiled && code_->vectorised();
+  return (kind_ == Kind::compiled && code_->vectorised()) || (kind_ == Kind::native && lane_native_);
 }
 
 void Function::call_lanes(const double* const* args, std::size_t lanes, double* out) const {
   if (kind_ == Kind::compiled) return code_->run_lanes(args, lanes, out);
+  if (kind_ == Kind::native && lane_native_ && lanes <= kMaxLanes && arity_ <= kMaxLaneArguments) {
+    // Whole registers: lanes past `lanes` repeat lane 0.
+    std::array<std::array<double, kMaxLanes>, kMaxLaneArguments> full;
+    std::array<const double*, kMaxLaneArguments> columns;
+    for (std::size_t i = 0; i < arity_; ++i) {
+      for (std::size_t l = 0; l < kMaxLanes; ++l) full[i][l] = args[i][l < lanes ? l : 0];
+      columns[i] = full[i].data();
+    }
+    std::array<double, kMaxLanes> values;
+    lane_native_(columns.data(), values.data());
+    for (std::size_t l = 0; l < lanes; ++l) out[l] = values[l];
+    return;
+  }
   std::array<double, 64> point{};
   if (arity_ > point.size()) throw FunctionError(name_ + ": too many arguments for a multi-point call");
   for (std::size_t l = 0; l < lanes; ++l) {
     for (std::size_t i = 0; i < arity_; ++i) point[i] = args[i][l];
     out[l] = call(point.data());
   }
+}
+
+Function::LaneBatch::LaneBatch(const Function& f) : f_(f) {
+  if (f.arity_ > kMaxLaneArguments)
+    throw FunctionError(f.name_ + ": too many arguments for a multi-point call");
+  std::size_t registers = f.arity_;  // any other function: the arguments' columns only
+  std::size_t first_argument = 0;
+  if (f.kind_ == Kind::compiled) {
+    code_ = f.code_.get();
+    registers = code_->lane_registers();
+    first_argument = code_->parameter_register(0);
+  }
+  registers_ = fixed_.data();
+  if (registers * kMaxLanes > fixed_.size()) {
+    heap_.resize(registers * kMaxLanes);
+    registers_ = heap_.data();
+  }
+  if (code_) code_->prepare_lanes(registers_);
+  for (std::size_t i = 0; i < f.arity_; ++i) arguments_[i] = registers_ + (first_argument + i) * kMaxLanes;
+}
+
+const double* Function::LaneBatch::run() {
+  if (code_) return code_->run_prepared_lanes(registers_);
+  f_.call_lanes(arguments_.data(), kMaxLanes, out_.data());
+  return out_.data();
 }
 
 }  // namespace snell::function

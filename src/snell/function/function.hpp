@@ -3,6 +3,7 @@
 // is compiled once into a flat stack program, so isosurfaces and parametric objects can evaluate it
 // millions of times without touching the parser. Depends on math only (plus texture's Perlin noise for
 // f_noise3d), never on the scene-language parser.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -88,13 +89,23 @@ class ProgramBuilder {
 class Function {
  public:
   using Native = double (*)(const double* args);
+  /// A native's values at kMaxLanes points at once: argument i of point l is args[i][l], the value goes to
+  /// out[l]; for every lane the same value as the Native at that point.
+  using LaneNative = void (*)(const double* const* args, double* out);
+  /// The most points call_lanes takes at once.
+  static constexpr std::size_t kMaxLanes = 8;
+  /// The most arguments a native takes through its LaneNative (more go lane by lane), and a LaneBatch.
+  static constexpr std::size_t kMaxLaneArguments = 16;
   /// Writes components() values to `out`.
   using VectorNative = std::function<void(const double* args, double* out)>;
   /// The most components a vector function returns: a colour's red, green, blue, filter, transmit.
   static constexpr std::size_t kMaxComponents = 5;
 
   static std::shared_ptr<const Function> compiled(std::vector<std::string> parameters, Program program);
-  static std::shared_ptr<const Function> native(std::string name, std::size_t arity, Native fn);
+  /// `lanes`, when given, computes fn at kMaxLanes points at once (register code then evaluates calls of
+  /// it on whole registers).
+  static std::shared_ptr<const Function> native(std::string name, std::size_t arity, Native fn,
+                                                LaneNative lanes = nullptr);
   /// Declares fine; every call throws FunctionError with `reason`.
   /// A vector-valued function (POV-Ray's `function { pigment {..} }`, `{ spline {..} }`,
   /// `{ transform {..} }`): used through a component, `F(x,y,z).red`, or as a whole in scene expressions.
@@ -118,7 +129,30 @@ class Function {
   /// call() at `lanes` points at once (at most kMaxLanes): parameter i of point l is args[i][l], the
   /// value goes to out[l]. A compiled function runs its code once for all points (SIMD lanes).
   void call_lanes(const double* const* args, std::size_t lanes, double* out) const;
-  static constexpr std::size_t kMaxLanes = 8;
+  /// Repeated evaluation at kMaxLanes points with the least copying, for a caller that evaluates one
+  /// function many times (an isosurface's march along a ray): fill argument(i)[0 .. kMaxLanes) for each
+  /// parameter, then run() returns the kMaxLanes values (valid until the next run). A compiled function's
+  /// arguments are written straight into its register file, whose constants are filled once, when the
+  /// batch is made. Takes at most kMaxLaneArguments parameters (FunctionError otherwise).
+  class LaneBatch {
+   public:
+    explicit LaneBatch(const Function& f);
+    LaneBatch(const LaneBatch&) = delete;
+    LaneBatch& operator=(const LaneBatch&) = delete;
+    double* argument(std::size_t i) { return arguments_[i]; }
+    const double* run();
+
+   private:
+    static constexpr std::size_t kFixed = 128 * kMaxLanes;
+    const Function& f_;
+    const RegisterCode* code_ = nullptr;  // a compiled function's code, else null
+    std::array<double*, kMaxLaneArguments> arguments_{};
+    double* registers_ = nullptr;
+    alignas(64) std::array<double, kFixed> fixed_;
+    std::vector<double> heap_;
+    std::array<double, kMaxLanes> out_;
+  };
+
   /// Whether call_lanes costs about one call whatever the number of lanes: a compiled function whose code
   /// runs on whole SIMD registers throughout. Otherwise (natives, calls of pattern functions, built-ins
   /// without lane kernels) some of it runs lane by lane, and extra lanes cost nearly as much as calls.
@@ -128,6 +162,8 @@ class Function {
   const Program* stack_program() const { return kind_ == Kind::compiled ? &program_ : nullptr; }
   /// A native function's entry point; else null.
   Native native_function() const { return kind_ == Kind::native ? native_ : nullptr; }
+  /// A native function's multi-point entry point, where it has one; else null.
+  LaneNative lane_native_function() const { return kind_ == Kind::native ? lane_native_ : nullptr; }
 
  private:
   enum class Kind { compiled, native, vector, unsupported };
@@ -139,6 +175,7 @@ class Function {
   Program program_;
   std::shared_ptr<const RegisterCode> code_;  // what a compiled function runs (register_code.hpp)
   Native native_ = nullptr;
+  LaneNative lane_native_ = nullptr;
   VectorNative vector_;
   std::size_t components_ = 1;
   std::string reason_;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "snell/function/algebraic_surfaces.hpp"
+#include "snell/function/lane_math.hpp"
 #include "snell/function/plane_curves.hpp"
 #include "snell/function/special_shapes.hpp"
 #include "snell/math/constants.hpp"
@@ -20,34 +21,146 @@ using math::kPi;
 // Formulas from the functions.inc documentation (POV-Ray 3.7 reference, "Internal Functions").
 // Arguments: a[0..2] = x, y, z; a[3..] = the extra parameters in documented order.
 
-double f_ellipsoid(const double* a) {  // 17: radius-like value of an ellipsoid with inverse semi-axes
-  return std::sqrt(a[0] * a[0] * a[3] * a[3] + a[1] * a[1] * a[4] * a[4] + a[2] * a[2] * a[5] * a[5]);
+// The natives isosurfaces call most, written once as formulas over a number type T: double computes one
+// point (the Native), Lanes kMaxLanes points at once (the LaneNative), by the same operations in the same
+// order, so that every lane equals the one-point call bit for bit (angles excepted: their lanes use the
+// vector atan2, within 2 ulp of libm's, as compiled functions' lanes do).
+constexpr std::size_t kLanes = Function::kMaxLanes;
+
+/// One value at kLanes points; arithmetic lane by lane (fixed-length loops, which the compiler vectorises).
+struct Lanes {
+  double v[kLanes];
+};
+
+template <typename F>
+[[gnu::always_inline]] inline Lanes each(const Lanes& a, const Lanes& b, F f) {
+  Lanes out;
+  for (std::size_t l = 0; l < kLanes; ++l) out.v[l] = f(a.v[l], b.v[l]);
+  return out;
+}
+Lanes operator+(const Lanes& a, const Lanes& b) {
+  return each(a, b, [](double x, double y) { return x + y; });
+}
+Lanes operator-(const Lanes& a, const Lanes& b) {
+  return each(a, b, [](double x, double y) { return x - y; });
+}
+Lanes operator*(const Lanes& a, const Lanes& b) {
+  return each(a, b, [](double x, double y) { return x * y; });
+}
+Lanes operator-(const Lanes& a, double b) {
+  return each(a, a, [b](double x, double) { return x - b; });
 }
 
-double f_ph(const double* a) {  // 47: polar angle from +y
-  return std::atan2(std::sqrt(a[0] * a[0] + a[2] * a[2]), a[1]);
+template <typename T>
+T constant(double c);
+template <>
+double constant<double>(double c) {
+  return c;
+}
+template <>
+Lanes constant<Lanes>(double c) {
+  Lanes out;
+  for (double& v : out.v) v = c;
+  return out;
 }
 
-double f_r(const double* a) {  // 57: distance from the origin
-  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+double root(double x) {
+  return std::sqrt(x);
+}
+Lanes root(const Lanes& x) {
+  Lanes out;
+  lanes::sqrt(x.v, out.v);
+  return out;
+}
+double magnitude(double x) {
+  return std::fabs(x);
+}
+Lanes magnitude(const Lanes& x) {
+  return each(x, x, [](double a, double) { return std::fabs(a); });
+}
+double at_least_zero(double x) {
+  return std::max(x, 0.0);
+}
+Lanes at_least_zero(const Lanes& x) {
+  return each(x, x, [](double a, double) { return std::max(a, 0.0); });
+}
+double angle(double y, double x) {
+  return std::atan2(y, x);
+}
+Lanes angle(const Lanes& y, const Lanes& x) {
+  Lanes out;
+  lanes::atan2(y.v, x.v, out.v);
+  return out;
 }
 
-double f_rounded_box(const double* a) {  // 60: radius, then the box's half sizes along x, y, z
-  const double radius = a[3];
-  double d2 = 0;
-  for (int i = 0; i < 3; ++i) {
-    // Distance outside the box shrunk by the rounding radius, on this axis.
-    const double inner = a[4 + i] - radius;
-    const double d = std::max(std::fabs(a[i]) - inner, 0.0);
-    d2 += d * d;
+/// Argument i of one point (a Native's arguments) or of kLanes points (a LaneNative's).
+struct Point {
+  const double* a;
+  double operator[](std::size_t i) const { return a[i]; }
+};
+struct Points {
+  const double* const* a;
+  Lanes operator[](std::size_t i) const {
+    Lanes out;
+    for (std::size_t l = 0; l < kLanes; ++l) out.v[l] = a[i][l];
+    return out;
   }
-  // POV-Ray subtracts a further 1e-6 so that coincident surfaces do not flicker.
-  return std::sqrt(d2) - radius - 1e-6;
+};
+
+/// The Native and the LaneNative of a formula F (F::value<T>(args), args[i] of type T).
+template <typename F>
+double at_point(const double* a) {
+  return F::template value<double>(Point{a});
+}
+template <typename F>
+void at_lanes(const double* const* a, double* out) {
+  const Lanes v = F::template value<Lanes>(Points{a});
+  for (std::size_t l = 0; l < kLanes; ++l) out[l] = v.v[l];
 }
 
-double f_sphere(const double* a) {  // 61: signed distance to a sphere of radius a[3]
-  return f_r(a) - a[3];
-}
+struct Ellipsoid {  // 17: radius-like value of an ellipsoid with inverse semi-axes
+  template <typename T, typename A>
+  static T value(const A& a) {
+    return root(a[0] * a[0] * a[3] * a[3] + a[1] * a[1] * a[4] * a[4] + a[2] * a[2] * a[5] * a[5]);
+  }
+};
+
+struct Ph {  // 47: polar angle from +y
+  template <typename T, typename A>
+  static T value(const A& a) {
+    return angle(root(a[0] * a[0] + a[2] * a[2]), a[1]);
+  }
+};
+
+struct R {  // 57: distance from the origin
+  template <typename T, typename A>
+  static T value(const A& a) {
+    return root(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  }
+};
+
+struct RoundedBox {  // 60: radius, then the box's half sizes along x, y, z
+  template <typename T, typename A>
+  static T value(const A& a) {
+    const T radius = a[3];
+    T d2 = constant<T>(0);
+    for (std::size_t i = 0; i < 3; ++i) {
+      // Distance outside the box shrunk by the rounding radius, on this axis.
+      const T inner = a[4 + i] - radius;
+      const T d = at_least_zero(magnitude(a[i]) - inner);
+      d2 = d2 + d * d;
+    }
+    // POV-Ray subtracts a further 1e-6 so that coincident surfaces do not flicker.
+    return root(d2) - radius - 1e-6;
+  }
+};
+
+struct Sphere {  // 61: signed distance to a sphere of radius a[3]
+  template <typename T, typename A>
+  static T value(const A& a) {
+    return R::value<T>(a) - a[3];
+  }
+};
 
 double f_superellipsoid(const double* a) {  // 68: east-west exponent e, north-south exponent n
   const double e = a[3], n = a[4];
@@ -55,14 +168,20 @@ double f_superellipsoid(const double* a) {  // 68: east-west exponent e, north-s
   return 1 - std::pow(std::pow(xy, e / n) + std::pow(std::fabs(a[2]), 2 / n), n / 2);
 }
 
-double f_th(const double* a) {  // 69: azimuth around y, measured from +z towards +x
-  return std::atan2(a[0], a[2]);
-}
+struct Th {  // 69: azimuth around y, measured from +z towards +x
+  template <typename T, typename A>
+  static T value(const A& a) {
+    return angle(a[0], a[2]);
+  }
+};
 
-double f_torus(const double* a) {  // 70: major radius, minor radius; torus in the x-z plane
-  const double ring = std::sqrt(a[0] * a[0] + a[2] * a[2]) - a[3];
-  return std::sqrt(ring * ring + a[1] * a[1]) - a[4];
-}
+struct Torus {  // 70: major radius, minor radius; torus in the x-z plane
+  template <typename T, typename A>
+  static T value(const A& a) {
+    const T ring = root(a[0] * a[0] + a[2] * a[2]) - a[3];
+    return root(ring * ring + a[1] * a[1]) - a[4];
+  }
+};
 
 /// POV-Ray's Noise() in [0, 1] with 3.7's default generator (range corrected; texture/povray_noise.hpp).
 double noise01(double x, double y, double z) {
@@ -71,6 +190,10 @@ double noise01(double x, double y, double z) {
 
 double f_noise3d(const double* a) {  // 76
   return noise01(a[0], a[1], a[2]);
+}
+
+void f_noise3d_lanes(const double* const* a, double* out) {
+  texture::povray_noise_lanes(a[0], a[1], a[2], out);
 }
 
 /// A noise generator parameter of an internal function: POV-Ray (vm/fnintern.cpp) keeps its low two bits,
@@ -82,6 +205,17 @@ texture::NoiseGenerator generator_parameter(double value) {
 
 double f_noise_generator(const double* a) {  // 78: the generator number (a[3]) picks POV-Ray's variant
   return texture::povray_noise({a[0], a[1], a[2]}, generator_parameter(a[3]));
+}
+
+void f_noise_generator_lanes(const double* const* a, double* out) {
+  const texture::NoiseGenerator generator = generator_parameter(a[3][0]);
+  bool same = true;
+  for (std::size_t l = 1; l < kLanes; ++l) same = same && generator_parameter(a[3][l]) == generator;
+  if (same) return texture::povray_noise_lanes(a[0], a[1], a[2], out, generator);
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    const double point[4] = {a[0][l], a[1][l], a[2][l], a[3][l]};
+    out[l] = f_noise_generator(point);
+  }
 }
 
 double f_helix1(const double* a) {  // 25
@@ -194,6 +328,7 @@ struct Entry {
   const char* name;
   int extra;  // parameters after x, y, z
   Function::Native fn;
+  Function::LaneNative lanes = nullptr;  // the same at several points at once, where written
 };
 
 // Numbers and parameter counts as functions.inc declares them.
@@ -215,7 +350,7 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_devils_curve", 1, surfaces::devils_curve},
     {"f_devils_curve_2d", 6, curves::devils_curve_2d},
     {"f_dupin_cyclid", 6, special::dupin_cyclid},
-    {"f_ellipsoid", 3, f_ellipsoid},
+    {"f_ellipsoid", 3, at_point<Ellipsoid>, at_lanes<Ellipsoid>},
     {"f_enneper", 1, special::enneper},
     {"f_flange_cover", 4, curves::flange_cover},
     {"f_folium_surface", 3, surfaces::folium_surface},
@@ -245,7 +380,7 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_ovals_of_cassini", 4, surfaces::ovals_of_cassini},
     {"f_paraboloid", 1, surfaces::paraboloid},
     {"f_parabolic_torus", 3, surfaces::parabolic_torus},
-    {"f_ph", 0, f_ph},
+    {"f_ph", 0, at_point<Ph>, at_lanes<Ph>},
     {"f_pillow", 1, surfaces::pillow},
     {"f_piriform", 1, surfaces::piriform},
     {"f_piriform_2d", 7, curves::piriform_2d},
@@ -255,11 +390,11 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_quartic_paraboloid", 1, surfaces::quartic_paraboloid},
     {"f_quartic_saddle", 1, surfaces::quartic_saddle},
     {"f_quartic_cylinder", 3, surfaces::quartic_cylinder},
-    {"f_r", 0, f_r},
+    {"f_r", 0, at_point<R>, at_lanes<R>},
     {"f_ridge", 6, f_ridge},
     {"f_ridged_mf", 6, f_ridged_mf},
-    {"f_rounded_box", 4, f_rounded_box},
-    {"f_sphere", 1, f_sphere},
+    {"f_rounded_box", 4, at_point<RoundedBox>, at_lanes<RoundedBox>},
+    {"f_sphere", 1, at_point<Sphere>, at_lanes<Sphere>},
     {"f_spikes", 5, curves::spikes},
     {"f_spikes_2d", 4, curves::spikes_2d},
     {"f_spiral", 6, curves::spiral},
@@ -267,16 +402,16 @@ constexpr std::array<Entry, 79> kTable{{
     {"f_strophoid", 4, surfaces::strophoid},
     {"f_strophoid_2d", 7, curves::strophoid_2d},
     {"f_superellipsoid", 2, f_superellipsoid},
-    {"f_th", 0, f_th},
-    {"f_torus", 2, f_torus},
+    {"f_th", 0, at_point<Th>, at_lanes<Th>},
+    {"f_torus", 2, at_point<Torus>, at_lanes<Torus>},
     {"f_torus2", 3, surfaces::torus2},
     {"f_torus_gumdrop", 1, surfaces::torus_gumdrop},
     {"f_umbrella", 1, surfaces::umbrella},
     {"f_witch_of_agnesi", 2, surfaces::witch_of_agnesi},
     {"f_witch_of_agnesi_2d", 6, curves::witch_of_agnesi_2d},
-    {"f_noise3d", 0, f_noise3d},
+    {"f_noise3d", 0, f_noise3d, f_noise3d_lanes},
     {"f_pattern", 0, nullptr},
-    {"f_noise_generator", 1, f_noise_generator},
+    {"f_noise_generator", 1, f_noise_generator, f_noise_generator_lanes},
 }};
 
 }  // namespace
@@ -287,7 +422,7 @@ std::shared_ptr<const Function> internal_function(int n) {
                         std::to_string(kTable.size() - 1) + ")");
   const Entry& e = kTable[static_cast<std::size_t>(n)];
   const auto arity = static_cast<std::size_t>(3 + e.extra);
-  if (e.fn) return Function::native(e.name, arity, e.fn);
+  if (e.fn) return Function::native(e.name, arity, e.fn, e.lanes);
   return Function::unsupported(
       e.name, arity,
       std::string(e.name) + " (internal(" + std::to_string(n) + ")) is not implemented in snell yet");

@@ -4,74 +4,26 @@
 #include <cstdint>
 #include <cstring>
 
+#include "snell/math/simd.hpp"
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
 
-// The kernels are written once over GCC/Clang vector extensions of W doubles and built twice: W = 2 for
-// any x86-64 (SSE2), W = 4 in functions compiled for AVX2, chosen once at run time. Only operations that
-// both instruction sets have natively are used (double compares, 64-bit adds, shifts and logic; no 64-bit
-// integer compares), and no fused multiply-add, so both builds give the same bits. The helpers pass
-// vectors by value; they are internal to this file and inlined, so GCC's ABI note about such arguments
-// does not apply (CMakeLists.txt compiles this file with -Wno-psabi).
+// The kernels are written once over vector extensions of W doubles (math/simd.hpp) and built twice: W = 2
+// for any x86-64 (SSE2), W = 4 in functions compiled for AVX2, chosen once at run time.
 namespace snell::function::lanes {
 
 namespace {
 
-// W doubles (V) and W 64-bit integers for masks and bits (M). Spelled out per width: GCC drops a
-// vector_size attribute whose size depends on a template parameter.
-template <int W>
-struct Vec;
-template <>
-struct Vec<2> {
-  using V = double __attribute__((vector_size(16)));
-  using M = std::int64_t __attribute__((vector_size(16)));
-};
-template <>
-struct Vec<4> {
-  using V = double __attribute__((vector_size(32)));
-  using M = std::int64_t __attribute__((vector_size(32)));
-};
-
-constexpr std::int64_t kSignBit = INT64_MIN;
-
-#define SNELL_LANE_INLINE [[gnu::always_inline]] inline
-
-template <typename V>
-SNELL_LANE_INLINE V load(const double* p) {
-  V v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-
-template <typename V>
-SNELL_LANE_INLINE void store(double* p, V v) {
-  std::memcpy(p, &v, sizeof v);
-}
-
-// Same-size vector casts reinterpret the bits.
-template <typename M, typename V>
-SNELL_LANE_INLINE M bits(V v) {
-  return (M)v;
-}
-
-/// Lanes of a where mask m is set (all ones), else lanes of b.
-template <typename V, typename M>
-SNELL_LANE_INLINE V select(M m, V a, V b) {
-  return (V)(((M)a & m) | ((M)b & ~m));
-}
-
-template <typename V, typename M>
-SNELL_LANE_INLINE V abs(V v) {
-  return (V)((M)v & ~kSignBit);
-}
-
-template <int W, typename M>
-SNELL_LANE_INLINE bool any(M m) {
-  std::int64_t seen = 0;
-  for (int l = 0; l < W; ++l) seen |= m[l];
-  return seen != 0;
-}
+using math::simd::abs;
+using math::simd::any;
+using math::simd::bits;
+using math::simd::kSignBit;
+using math::simd::load;
+using math::simd::select;
+using math::simd::store;
+using math::simd::Vec;
 
 // pi/2 = kPio2a + kPio2b + kPio2c: Cephes's three-part pi/4 doubled (exact); the first two have short
 // significands, so n * kPio2a and n * kPio2b are exact for |n| < 2^29.
@@ -84,7 +36,7 @@ constexpr double kTrigLimit = 1e6;                  // larger arguments: libm
 
 /// out = sin(in) for quarter offset 0, cos(in) for offset 1 (cos x = sin(x + pi/2)), W lanes.
 template <int W>
-SNELL_LANE_INLINE void trig_chunk(const double* in, double* out, std::int64_t offset) {
+SNELL_SIMD_INLINE void trig_chunk(const double* in, double* out, std::int64_t offset) {
   using V = typename Vec<W>::V;
   using M = typename Vec<W>::M;
   const V x = load<V>(in);
@@ -119,7 +71,7 @@ SNELL_LANE_INLINE void trig_chunk(const double* in, double* out, std::int64_t of
 }
 
 template <int W>
-SNELL_LANE_INLINE bool trig_in_range(const double* in) {
+SNELL_SIMD_INLINE bool trig_in_range(const double* in) {
   using V = typename Vec<W>::V;
   using M = typename Vec<W>::M;
   const V x = load<V>(in);
@@ -135,7 +87,7 @@ constexpr double kTan3Pi8 = 2.41421356237309504880;
 
 /// out = atan2(y, x), W lanes; returns false where some lane needs libm (zeros, huge or tiny values).
 template <int W>
-SNELL_LANE_INLINE bool atan2_chunk(const double* y_in, const double* x_in, double* out) {
+SNELL_SIMD_INLINE bool atan2_chunk(const double* y_in, const double* x_in, double* out) {
   using V = typename Vec<W>::V;
   using M = typename Vec<W>::M;
   const V y = load<V>(y_in), x = load<V>(x_in);
@@ -175,7 +127,7 @@ SNELL_LANE_INLINE bool atan2_chunk(const double* y_in, const double* x_in, doubl
 
 // Whole registers of kLaneWidth lanes, for each build.
 template <int W>
-SNELL_LANE_INLINE bool sin_all(const double* x, double* out, std::int64_t offset) {
+SNELL_SIMD_INLINE bool sin_all(const double* x, double* out, std::int64_t offset) {
   bool ok = true;
   for (std::size_t l = 0; l < kLaneWidth; l += W) {
     trig_chunk<W>(x + l, out + l, offset);
@@ -185,7 +137,7 @@ SNELL_LANE_INLINE bool sin_all(const double* x, double* out, std::int64_t offset
 }
 
 template <int W>
-SNELL_LANE_INLINE bool atan2_all(const double* y, const double* x, double* out) {
+SNELL_SIMD_INLINE bool atan2_all(const double* y, const double* x, double* out) {
   bool ok = true;
   for (std::size_t l = 0; l < kLaneWidth; l += W) ok = atan2_chunk<W>(y + l, x + l, out + l) && ok;
   return ok;

@@ -44,6 +44,8 @@ LaneOp lane_op(const RegisterInstruction& in) {
       return LaneOp::less;
     case Op::greater:
       return LaneOp::greater;
+    case Op::native:
+      return in.lane_native && in.b <= Function::kMaxLaneArguments ? LaneOp::native : LaneOp::by_lane;
     case Op::unary:
     case Op::binary:
       switch (in.op == Op::unary ? lane_kernel(in.unary) : lane_kernel(in.binary)) {
@@ -151,6 +153,7 @@ class RegisterCodeBuilder {
           } else if (callee->native_function() && callee->arity() == in.count) {
             n.instruction.op = Op::native;
             n.instruction.native = callee->native_function();
+            n.instruction.lane_native = callee->lane_native_function();
           } else {
             n.instruction.op = Op::call;
             n.instruction.callee = callee.get();

@@ -21,7 +21,8 @@
 namespace snell::function {
 
 /// How run_lanes computes an instruction: on whole registers (arithmetic, < and >, the built-ins with
-/// lane kernels), or one lane at a time through the scalar step (calls, natives, the rest).
+/// lane kernels, natives with multi-point entry points), or one lane at a time through the scalar step
+/// (calls, other natives, the rest).
 enum class LaneOp : std::uint8_t {
   add,
   subtract,
@@ -38,6 +39,7 @@ enum class LaneOp : std::uint8_t {
   atan2,
   min,
   max,
+  native,  // a native with a multi-point entry point (Function::LaneNative)
   by_lane,
 };
 
@@ -52,6 +54,7 @@ struct RegisterInstruction {
   double (*unary)(double) = nullptr;
   double (*binary)(double, double) = nullptr;
   Function::Native native = nullptr;
+  Function::LaneNative lane_native = nullptr;  // native's multi-point entry point, if it has one
   const Function* callee = nullptr;
   std::uint32_t component = 0;
 };
@@ -68,6 +71,16 @@ class RegisterCode {
   double run(const double* args) const;
   /// Values at `lanes` (1..kMaxLanes) points: parameter i of point l is args[i][l]; results go to out[l].
   void run_lanes(const double* const* args, std::size_t lanes, double* out) const;
+
+  /// run_lanes in parts, for a caller that runs the code many times on one register file (kMaxLanes
+  /// doubles a register, lane_registers() of them): prepare_lanes fills the constants once, then each
+  /// run fills the parameters' registers (parameter_register(i)) and calls run_prepared_lanes, which
+  /// returns the result's register. Lanes past `lanes` repeat lane 0 (instructions that go lane by lane
+  /// compute only the first `lanes` and copy lane 0 into the rest).
+  std::size_t lane_registers() const { return constants_.size() + arity_ + code_.size(); }
+  std::size_t parameter_register(std::size_t i) const { return constants_.size() + i; }
+  void prepare_lanes(double* registers) const;
+  const double* run_prepared_lanes(double* registers, std::size_t lanes = kMaxLanes) const;
 
   std::size_t instruction_count() const { return code_.size(); }
   /// Whether run_lanes computes every instruction on whole registers, none lane by lane (LaneOp).

@@ -177,6 +177,12 @@ void lane_by_lane(const RegisterInstruction& in, const double* r, const std::uin
       case LaneOp::max:
         each_lane(dst, a, b, [](double x, double y) { return x < y ? y : x; });
         break;
+      case LaneOp::native: {
+        std::array<const double*, Function::kMaxLaneArguments> columns;
+        for (std::uint32_t k = 0; k < in.b; ++k) columns[k] = r + arguments[in.a + k] * kLanes;
+        in.lane_native(columns.data(), dst);
+        break;
+      }
       case LaneOp::by_lane:
         break;  // handled above
     }
@@ -185,22 +191,29 @@ void lane_by_lane(const RegisterInstruction& in, const double* r, const std::uin
 
 }  // namespace
 
+void RegisterCode::prepare_lanes(double* r) const {
+  std::memcpy(r, lane_constants_.data(), constants_.size() * kLanes * sizeof(double));
+}
+
+const double* RegisterCode::run_prepared_lanes(double* r, std::size_t lanes) const {
+  run_lane_code(code_.data(), code_.size(), r, constants_.size() + arity_, arguments_.data(), lanes);
+  return r + result_ * kLanes;
+}
+
 void RegisterCode::run_lanes(const double* const* args, std::size_t lanes, double* out) const {
   if (lanes == 0) return;
   if (lanes > kLanes) throw FunctionError("internal error: too many lanes");
   // One register file, kLanes doubles a register, numbered as run_in's: constants, parameters, results.
-  const std::size_t constants = constants_.size();
-  const std::size_t registers = constants + arity_ + code_.size();
   alignas(64) std::array<double, 128 * kLanes> fixed;
   std::vector<double> heap;
   double* r = fixed.data();
-  if (registers * kLanes > fixed.size()) {
-    heap.resize(registers * kLanes);
+  if (lane_registers() * kLanes > fixed.size()) {
+    heap.resize(lane_registers() * kLanes);
     r = heap.data();
   }
-  std::memcpy(r, lane_constants_.data(), constants * kLanes * sizeof(double));
+  prepare_lanes(r);
   for (std::size_t i = 0; i < arity_; ++i) {
-    double* p = r + (constants + i) * kLanes;
+    double* p = r + parameter_register(i) * kLanes;
     if (lanes == kLanes) {
       std::memcpy(p, args[i], kLanes * sizeof(double));  // a fixed size: a few vector moves
     } else {
@@ -208,11 +221,7 @@ void RegisterCode::run_lanes(const double* const* args, std::size_t lanes, doubl
       repeat_first(p, lanes);
     }
   }
-  run_lane_code(code_.data(), code_.size(), r, constants + arity_, arguments_.data(), lanes);
-  if (lanes == kLanes)
-    std::memcpy(out, r + result_ * kLanes, kLanes * sizeof(double));
-  else
-    std::memcpy(out, r + result_ * kLanes, lanes * sizeof(double));
+  std::memcpy(out, run_prepared_lanes(r, lanes), lanes * sizeof(double));
 }
 
 }  // namespace snell::function

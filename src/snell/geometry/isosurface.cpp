@@ -158,20 +158,6 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   // A function whose code runs on whole SIMD registers is evaluated at several points of the ray at once
   // (about the cost of one point); any other (natives such as noise run lane by lane) one point at a time.
   constexpr int kLanes = static_cast<int>(function::Function::kMaxLanes);
-  const auto g_lanes = [&](const double* ts, int n, double* out) {
-    evaluations.n += static_cast<std::uint64_t>(n);
-    // All lanes filled (ts repeats its last point past n): whole registers cost the same, and the copies
-    // in and out are then of fixed size.
-    double xs[kLanes], ys[kLanes], zs[kLanes];
-    const Vec3 o = ray.origin, d = ray.direction;  // locals: the stores below cannot alias them
-    for (int i = 0; i < kLanes; ++i) xs[i] = o.x + ts[i] * d.x;
-    for (int i = 0; i < kLanes; ++i) ys[i] = o.y + ts[i] * d.y;
-    for (int i = 0; i < kLanes; ++i) zs[i] = o.z + ts[i] * d.z;
-    const double* const args[3] = {xs, ys, zs};
-    settings_.function->call_lanes(args, kLanes, out);
-    const double threshold = settings_.threshold;
-    for (int i = 0; i < kLanes; ++i) out[i] -= threshold;
-  };
 
   const MarchSettings march{lipschitz, accuracy, 0.1 * accuracy};
   bool more = true;
@@ -188,10 +174,27 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
     return more;
   };
   const auto on_slope = [&](double slope) { steepest = std::max(steepest, slope); };
-  if (settings_.function->vectorised())
+  if (settings_.function->vectorised()) {
+    // The points go straight into the function's registers (its constants filled once per ray).
+    function::Function::LaneBatch batch(*settings_.function);
+    const auto g_lanes = [&](const double* ts, int n, double* out) {
+      evaluations.n += static_cast<std::uint64_t>(n);
+      // All lanes filled (ts repeats its last point past n): whole registers cost the same.
+      double* __restrict xs = batch.argument(0);
+      double* __restrict ys = batch.argument(1);
+      double* __restrict zs = batch.argument(2);
+      const Vec3 o = ray.origin, d = ray.direction;  // locals: the stores below cannot alias them
+      for (int i = 0; i < kLanes; ++i) xs[i] = o.x + ts[i] * d.x;
+      for (int i = 0; i < kLanes; ++i) ys[i] = o.y + ts[i] * d.y;
+      for (int i = 0; i < kLanes; ++i) zs[i] = o.z + ts[i] * d.z;
+      const double* f = batch.run();
+      const double threshold = settings_.threshold;
+      for (int i = 0; i < kLanes; ++i) out[i] = f[i] - threshold;
+    };
     gt = march_roots_lanes<kLanes>(g, g_lanes, t, gt, hi, march, on_root, on_slope);
-  else
+  } else {
     gt = march_roots(g, t, gt, hi, march, on_root, on_slope);
+  }
   note_slope(steepest / speed);
   // Short of the root by the accuracy, the distance within which the march places it.
   const double proven_end = first_root < hi ? first_root - accuracy : hi;

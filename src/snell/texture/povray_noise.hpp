@@ -33,6 +33,14 @@ class NoiseChoice {
 /// POV-Ray's Noise(): a scalar in [0, 1].
 double povray_noise(const math::Vec3& p, NoiseGenerator generator = kDefaultNoiseGenerator);
 
+/// How many points povray_noise_lanes takes at once (the register code's lane count).
+inline constexpr int kNoiseLanes = 8;
+
+/// povray_noise at kNoiseLanes points (x[l], y[l], z[l]) at once, bit for bit the same values: the
+/// lattice arithmetic runs on whole vectors of points, the table look-ups point by point.
+void povray_noise_lanes(const double* x, const double* y, const double* z, double* out,
+                        NoiseGenerator generator = kDefaultNoiseGenerator);
+
 /// POV-Ray's DNoise(): a vector whose components lie in about [-1, 1] (same for every generator).
 math::Vec3 povray_dnoise(const math::Vec3& p);
 
