@@ -125,10 +125,6 @@ void lane_by_lane(const RegisterInstruction& in, const double* r, const std::uin
   double* dst = r + first * kLanes;
   for (std::size_t i = 0; i < count; ++i, dst += kLanes) {
     const RegisterInstruction& in = code[i];
-    if (in.lane == LaneOp::by_lane) {
-      lane_by_lane(in, r, arguments, lanes, dst);
-      continue;
-    }
     const double* a = r + in.a * kLanes;
     const double* b = r + in.b * kLanes;
     switch (in.lane) {
@@ -184,7 +180,8 @@ void lane_by_lane(const RegisterInstruction& in, const double* r, const std::uin
         break;
       }
       case LaneOp::by_lane:
-        break;  // handled above
+        lane_by_lane(in, r, arguments, lanes, dst);
+        break;
     }
   }
 }

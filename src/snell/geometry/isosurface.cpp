@@ -177,7 +177,7 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   if (settings_.function->vectorised()) {
     // The points go straight into the function's registers (its constants filled once per ray).
     function::Function::LaneBatch batch(*settings_.function);
-    const auto g_lanes = [&](const double* ts, int n, double* out) {
+    const auto g_lanes = [&](const double* __restrict ts, int n, double* __restrict out) {
       evaluations.n += static_cast<std::uint64_t>(n);
       // All lanes filled (ts repeats its last point past n): whole registers cost the same.
       double* __restrict xs = batch.argument(0);

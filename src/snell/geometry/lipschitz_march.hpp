@@ -4,7 +4,11 @@
 // surfaces", The Visual Computer 12(10)) to bracket each sign change, then Illinois regula falsi (Dowell &
 // Jarratt 1971) to refine it. Shared by isosurface and superellipsoid.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+
+#include "snell/math/simd.hpp"
 
 namespace snell::geometry {
 
@@ -108,53 +112,73 @@ double march_roots(const G& g, double t, double gt, double hi, const MarchSettin
 /// ends cover it. The first step refused ends the pass and the next pass starts there, so the march
 /// proves exactly what march_roots proves; a wrong prediction only wastes lanes. Where the safe step is
 /// the minimum step (a loose bound L), all K steps are taken in one pass. Roots are refined with g.
+///
+/// The first predicted step is the safe step itself, which the walk always accepts, so that no pass is
+/// wasted (over-relaxed, a twelfth of the passes were refused at their first step); the others are
+/// over-relaxed by at most 1.5, not march_roots' 1.9: here a refused step costs the rest of the pass, and
+/// on isosurfaces.pov 1.5 takes the fewest passes (1.9: 6% more, 1.3 and 1.0: 0.3% and 3% more).
 template <int K, typename G, typename GLanes, typename OnRoot, typename OnSlope>
-double march_roots_lanes(const G& g, const GLanes& g_lanes, double t, double gt, double hi,
-                         const MarchSettings& s, OnRoot&& on_root, OnSlope&& on_slope) {
+requires(K % 2 == 0 && K <= 31) double march_roots_lanes(const G& g, const GLanes& g_lanes, double t,
+                                                         double gt, double hi, const MarchSettings& s,
+                                                         OnRoot&& on_root, OnSlope&& on_slope) {
+  namespace simd = math::simd;
+  using V = simd::Vec<2>::V;
+  using M = simd::Vec<2>::M;
   const double inverse_lipschitz = 1 / s.lipschitz;
   double approach = 0;  // how fast |g| shrank per unit t over the last step taken
   double steepest = 0;  // the steepest step taken, |dg| / dt
   while (t < hi) {
-    // Predicted steps: over-relaxed as march_roots while the predicted |g| allows.
+    // Predicted steps: the safe step, then over-relaxed ones while the predicted |g| allows.
     double ts[K], gs[K];
     int n = 0;
     const double rate = std::isnan(approach) ? s.lipschitz : std::clamp(approach, -s.lipschitz, s.lipschitz);
-    const double omega = std::clamp(1.9 / (1 + std::max(rate, 0.0) * inverse_lipschitz), 1.0, 1.9);
+    const double omega = std::clamp(1.5 / (1 + std::max(rate, 0.0) * inverse_lipschitz), 1.0, 1.5);
     for (double pt = t, pg = std::fabs(gt); n < K && pt < hi;) {
       const double reach = pg * inverse_lipschitz;
-      const double step = reach > s.min_step ? omega * reach : s.min_step;
+      const double step = reach > s.min_step ? (n == 0 ? reach : omega * reach) : s.min_step;
       pt = std::min(hi, pt + step);  // pt + step, rounded as the walk below rounds t0 + safe
       ts[n++] = pt;
       pg = std::max(0.0, pg - rate * step);
     }
     for (int i = n; i < K; ++i) ts[i] = ts[n - 1];
     g_lanes(ts, n, gs);
-    // Every step of the pass at once (fixed-length loops over arrays, which the compiler vectorises): its
-    // start, whether the scalar march's test accepts it, whether g changes sign over it, its slope.
-    double t0s[K], g0s[K], slope[K];
-    bool taken[K], crosses[K];
+    // Every step of the pass at once, two at a time (SSE2 vectors, math/simd.hpp): its start, whether the
+    // scalar march's test accepts it, whether g changes sign over it, its slope; the tests as bit masks
+    // (bit i: step i), so the walk below needs no loop over the steps.
+    alignas(16) double t0s[K], g0s[K], slope[K];
     t0s[0] = t, g0s[0] = gt;
     for (int i = 1; i < K; ++i) t0s[i] = ts[i - 1], g0s[i] = gs[i - 1];
-    for (int i = 0; i < K; ++i) {
-      const double t0 = t0s[i], g0 = g0s[i], t1 = ts[i], g1 = gs[i];
-      // As the prediction computed it (min_step first: a NaN g gives the minimum step), so that a
-      // predicted step no longer than the safe one passes this test exactly, however t rounds.
-      const double safe = std::max(s.min_step, std::fabs(g0) * inverse_lipschitz);
-      // (| and ^ on bools, not || and !=: no branch, so the loop vectorises.)
-      taken[i] = (t1 <= t0 + safe) | (std::fabs(g0) + std::fabs(g1) >= s.lipschitz * (t1 - t0));
-      crosses[i] = (g0 < 0) ^ (g1 < 0);
-      slope[i] = std::fabs(g1 - g0) / (t1 - t0);  // NaN past n (no step), never read there
+    std::uint32_t taken = 0, crosses = 0;
+    const V zero{}, min_step = zero + s.min_step, lipschitz = zero + s.lipschitz,
+                    inverse = zero + inverse_lipschitz;
+    for (int i = 0; i < K; i += 2) {
+      const V t0 = simd::load<V>(t0s + i), g0 = simd::load<V>(g0s + i);
+      const V t1 = simd::load<V>(ts + i), g1 = simd::load<V>(gs + i);
+      const V size0 = simd::abs<V, M>(g0), size1 = simd::abs<V, M>(g1), dt = t1 - t0;
+      // As the prediction computed it (std::max(min_step, reach): a NaN g gives the minimum step), so that
+      // a predicted step no longer than the safe one passes this test exactly, however t rounds.
+      const V reach = size0 * inverse;
+      const V safe = simd::select((M)(min_step < reach), reach, min_step);
+      const M accepted = (M)(t1 <= t0 + safe) | (M)(size0 + size1 >= lipschitz * dt);
+      taken |= simd::mask_bits<2>(accepted) << i;
+      crosses |= simd::mask_bits<2>((M)(g0 < zero) ^ (M)(g1 < zero)) << i;
+      simd::store(slope + i, simd::abs<V, M>(g1 - g0) / dt);  // NaN past n (no step), never read there
     }
-    int walked = 0;  // steps taken so far in this pass
-    while (walked < n && taken[walked]) {
-      steepest = std::max(steepest, slope[walked]);
-      if (crosses[walked] &&
-          !on_root(refine_root(g, t0s[walked], g0s[walked], ts[walked], gs[walked], s.tolerance))) {
-        on_slope(steepest);
-        return gs[walked];
+    // The steps taken: those before the first refused one, of the n predicted.
+    const int walked = std::countr_one(taken & ((1u << n) - 1));
+    const auto steepest_of = [&](int count) {  // the steepest of the first `count` steps and `steepest`
+      double m = steepest;
+      for (int i = 0; i < count; ++i) m = std::max(m, slope[i]);
+      return m;
+    };
+    for (std::uint32_t roots = crosses & ((1u << walked) - 1); roots != 0; roots &= roots - 1) {
+      const int i = std::countr_zero(roots);
+      if (!on_root(refine_root(g, t0s[i], g0s[i], ts[i], gs[i], s.tolerance))) {
+        on_slope(steepest_of(i + 1));
+        return gs[i];
       }
-      ++walked;
     }
+    steepest = steepest_of(walked);
     if (walked > 0) {
       approach =
           (std::fabs(g0s[walked - 1]) - std::fabs(gs[walked - 1])) / (ts[walked - 1] - t0s[walked - 1]);

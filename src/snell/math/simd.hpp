@@ -68,4 +68,16 @@ SNELL_SIMD_INLINE bool any(M m) {
   return seen != 0;
 }
 
+/// Bit l set where lane l of mask m is set.
+template <int W, typename M>
+SNELL_SIMD_INLINE std::uint32_t mask_bits(M m) {
+#if defined(__x86_64__)
+  // One instruction (movmskpd: the lanes' sign bits, which a mask's lanes have where set).
+  if constexpr (W == 2) return static_cast<std::uint32_t>(__builtin_ia32_movmskpd((typename Vec<2>::V)m));
+#endif
+  std::uint32_t out = 0;
+  for (int l = 0; l < W; ++l) out |= static_cast<std::uint32_t>(m[l] & 1) << l;
+  return out;
+}
+
 }  // namespace snell::math::simd
