@@ -18,6 +18,11 @@ constexpr double kEpsilon = 1e-10;
 constexpr double kMaxDistance = 1e7;
 
 Color exp_neg(const Color& c) {
+  // Grey media (the usual case) thin every channel alike: one exp, the same value.
+  if (c.r == c.g && c.g == c.b) {
+    const double e = std::exp(-c.r);
+    return {e, e, e};
+  }
   return {std::exp(-c.r), std::exp(-c.g), std::exp(-c.b)};
 }
 
