@@ -95,16 +95,21 @@ TEST(MediaTest, ShadowRayThroughVaryingDensityAsPovRay37SamplesIt) {
   EXPECT_NEAR(media_transmittance({&m}, up, 2 * std::sqrt(2.0)).r, 0.129 / 0.703, 0.003);
 }
 
-TEST(MediaTest, LightsWithoutMediaInteractionDoNotScatter) {
-  material::Media m;
-  m.scattering = Color(0.2);
-  scene::Light light;
-  light.media_interaction = false;
-  const LightSampler constant = [](const scene::Light&, const Vec3&) {
-    return LightAtPoint{Color(1), Vec3{0, 1, 0}};
-  };
-  math::Pcg32 rng(1);
-  EXPECT_EQ(media_along({&m}, {light}, Ray{{0, 0, 0}, {1, 0, 0}}, 5, rng, constant).emitted, Color(0));
+TEST(MediaTest, LightsWithoutMediaInteractionOrShadowlessDoNotScatter) {
+  // POV-Ray 3.7 renders a scattering box lit only by a shadowless light black: its media gather light from
+  // point, spot and cylinder lights, and shadowless makes a fill light.
+  for (const bool shadowless : {false, true}) {
+    material::Media m;
+    m.scattering = Color(0.2);
+    scene::Light light;
+    light.media_interaction = shadowless;
+    light.shadowless = shadowless;
+    const LightSampler constant = [](const scene::Light&, const Vec3&) {
+      return LightAtPoint{Color(1), Vec3{0, 1, 0}};
+    };
+    math::Pcg32 rng(1);
+    EXPECT_EQ(media_along({&m}, {light}, Ray{{0, 0, 0}, {1, 0, 0}}, 5, rng, constant).emitted, Color(0));
+  }
 }
 
 TEST(MediaTest, SpotlightBeamIntervalIsWhereTheRayCrossesTheFalloffCone) {

@@ -324,7 +324,9 @@ MediaEffect media_along(const std::vector<const Media*>& media, const std::vecto
   if (media.empty() || !(depth > 0)) return effect;
   std::vector<LitLight> lit;
   for (const scene::Light& light : lights) {
-    if (!light.media_interaction) continue;
+    // A shadowless light is POV-Ray's fill light, a kind its media never gather light from (media.cpp,
+    // ComputeOneMediaLightInterval knows point, spot and cylinder lights only).
+    if (!light.media_interaction || light.shadowless) continue;
     double t0 = 0, t1 = 0;
     if (light_interval(light, ray, t0, t1) && t0 < depth && t1 > 1e-6)
       lit.push_back({&light, std::max(t0, 0.0), std::min(t1, depth)});
