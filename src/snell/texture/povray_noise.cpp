@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <random>
+#include <vector>
 
 namespace snell::texture {
 
@@ -211,6 +213,27 @@ double povray_noise(const Vec3& p, NoiseGenerator generator) {
       break;
   }
   return std::clamp(n, 0.0, 1.0);
+}
+
+int povray_hash3d(int x, int y, int z) {
+  const LatticeHash& hash = lattice_hash();
+  return hash.table[hash.pair(x & 0xFFF, y & 0xFFF) ^ (z & 0xFFF)];
+}
+
+double povray_pattern_random(size_t index) {
+  static const std::vector<double> table = [] {
+    std::mt19937 twister;  // default seed, as boost's
+    std::vector<double> t(32768);
+    for (double& v : t) v = static_cast<double>(twister()) / 4294967296.0;
+    return t;
+  }();
+  return table[index % table.size()];
+}
+
+Vec3 povray_point_in_cube(int x, int y, int z) {
+  const auto seed = static_cast<size_t>(povray_hash3d(x, y, z));
+  return {x + povray_pattern_random(seed), y + povray_pattern_random(seed + 1),
+          z + povray_pattern_random(seed + 2)};
 }
 
 Vec3 povray_dnoise(const Vec3& p) {
