@@ -236,6 +236,25 @@ Vec3 povray_point_in_cube(int x, int y, int z) {
           z + povray_pattern_random(seed + 2)};
 }
 
+math::Vec2 povray_jitter2d(double x, double y) {
+  static const std::array<double, 256> offsets = [] {
+    std::array<double, 256> t{};
+    for (unsigned i = 0; i < t.size(); ++i) {
+      unsigned bits = 0;
+      for (unsigned b = 0; b < 8; ++b)
+        if ((i >> b) & 1) bits ^= 0x8002u ^ (3u << (b + 7));
+      t[i] = bits / 65536.0 - 0.5;
+    }
+    return t;
+  }();
+  const LatticeHash& hash = lattice_hash();
+  const auto pick = [&](double a, double ka, double b, double kb) {
+    const int first = hash.table[static_cast<int>(a * ka) & 0xFFF];
+    return offsets[hash.table[(first ^ static_cast<int>(b * kb)) & 0xFFF] & 0xFF];
+  };
+  return {pick(x, 1021.0, y, 1019.0), pick(x, 1019.0, y, 1021.0)};
+}
+
 Vec3 povray_dnoise(const Vec3& p) {
   // Each component draws its coefficients 4 entries further along the table (POV-Ray's DNoise).
   const LatticeCell cell(p);

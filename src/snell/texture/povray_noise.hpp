@@ -43,6 +43,11 @@ double povray_pattern_random(size_t index);
 /// IntPickInCube): the cell's corner plus three table numbers drawn at its hash.
 math::Vec3 povray_point_in_cube(int x, int y, int z);
 
+/// POV-Ray's Jitter2d(x, y) (jitter.h): the offsets, each in [-0.5, 0.5], by which its anti-aliasing moves
+/// the supersample at image point (x, y) (pixel units), read through the noise's hash table from a table of
+/// 256 offsets (a binary digital sequence: entry i is the XOR of one 16-bit generator per set bit of i).
+math::Vec2 povray_jitter2d(double x, double y);
+
 /// POV-Ray's Noise(): a scalar in [0, 1].
 double povray_noise(const math::Vec3& p, NoiseGenerator generator = kDefaultNoiseGenerator);
 
