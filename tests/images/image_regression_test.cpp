@@ -64,7 +64,7 @@ INSTANTIATE_TEST_SUITE_P(PovRayScenes, ImageRegression,
                                            Case{"filtered_shadows", 0.999}, Case{"shapes", 0.99},
                                            Case{"lights_and_camera", 0.999}, Case{"blob_metaballs", 0.999},
                                            Case{"csg_and_patterns", 0.999}, Case{"ovus_parametric", 0.995},
-                                           Case{"aa_checker", 0.999}),
+                                           Case{"aa_checker", 0.999}, Case{"map_entries_warped", 0.999}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
