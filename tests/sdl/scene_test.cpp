@@ -116,7 +116,9 @@ TEST(SdlFinish, EveryField) {
   EXPECT_EQ(f.reflection_max, math::Color(0.8));
   EXPECT_TRUE(f.reflection_fresnel);
   EXPECT_EQ(f.reflection_falloff, 2);
-  EXPECT_EQ(f.reflection_exponent, 0.5);
+  // POV-Ray keeps 1 / exponent and raises the reflection to that (parstxtr.cpp): its render of a mirror
+  // with reflection { 1 exponent 0.5 } before a background of 0.25 reads 0.0625 (HDR).
+  EXPECT_EQ(f.reflection_exponent, 2.0);
   EXPECT_EQ(f.reflection_metallic, 0.3);
   EXPECT_TRUE(f.conserve_energy);
   const auto& g = scene.objects[1]->texture->finish;
