@@ -71,7 +71,7 @@ void run(benchmark::State& state, const char* kind, bool coherent) {
   }
   benchmark::DoNotOptimize(hits);
   // Work per ray, from one more pass with the counter on (kept out of the timed loop: it costs an atomic).
-  accel::ObjectTestCounter::tests = 0;
+  accel::ObjectTestCounter::reset();
   accel::ObjectTestCounter::enabled = true;
   accel::QueryCost cost;
   accel::t_query_cost = &cost;
@@ -84,7 +84,7 @@ void run(benchmark::State& state, const char* kind, bool coherent) {
   state.counters["nodes/ray"] = static_cast<double>(cost.nodes) / static_cast<double>(rays.size());
   state.counters["node_KiB"] = static_cast<double>(accel->stats().memory_bytes) / 1024.0;
   state.counters["tests/ray"] =
-      static_cast<double>(accel::ObjectTestCounter::tests.load()) / static_cast<double>(rays.size());
+      static_cast<double>(accel::ObjectTestCounter::total()) / static_cast<double>(rays.size());
   state.counters["rays/s"] =
       benchmark::Counter(static_cast<double>(state.iterations() * rays.size()), benchmark::Counter::kIsRate);
   state.counters["build_ms"] = accel->stats().build_seconds * 1e3;

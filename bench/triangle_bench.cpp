@@ -1,0 +1,223 @@
+// Rays per second on the same triangles: Embree called directly (float triangles, rtcIntersect1 and
+// rtcOccluded1, nothing of snell in between) against each of snell's accelerators, which see the
+// triangles as scene objects and intersect them in double precision, and against snell's mesh shape
+// (the triangles as one `mesh`, under its own BVH). Three ray sets: coherent primary rays (a pinhole
+// camera's grid), incoherent rays (random origins and directions, like diffuse bounces) and shadow rays
+// (occlusion queries from points on the triangles towards a light, most of them blocked part way).
+// Run: build/bench/snell_bench --benchmark_filter='triangles'
+#include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "snell/accel/accelerator.hpp"
+#include "snell/geometry/mesh.hpp"
+#include "snell/geometry/triangle.hpp"
+#include "snell/math/pcg32.hpp"
+
+namespace {
+
+using namespace snell;
+using math::Vec3;
+
+constexpr int kTriangles = 100000;
+constexpr int kRays = 1 << 14;
+
+double uniform(math::Pcg32& rng, double lo, double hi) {
+  return lo + (hi - lo) * rng.next_double();
+}
+
+/// A soup of `count` small triangles in a 20-unit cube, each a random triangle about as wide as the mean
+/// spacing of their centres: boxes overlap as in a crumpled mesh, and most rays stop within the cube.
+std::vector<std::array<Vec3, 3>> triangle_soup(int count) {
+  math::Pcg32 rng(42);
+  const double size = 0.5 * 20 / std::cbrt(static_cast<double>(count));
+  std::vector<std::array<Vec3, 3>> soup;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 c{uniform(rng, -10, 10), uniform(rng, -10, 10), uniform(rng, -10, 10)};
+    std::array<Vec3, 3> t;
+    for (Vec3& v : t) v = c + Vec3{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)} * size;
+    soup.push_back(t);
+  }
+  return soup;
+}
+
+struct Query {
+  math::Ray ray;
+  double t_max;
+};
+
+std::vector<Query> queries(const std::vector<std::array<Vec3, 3>>& soup, int kind) {
+  math::Pcg32 rng(7);
+  std::vector<Query> out;
+  const int side = static_cast<int>(std::sqrt(kRays));
+  for (int i = 0; i < kRays; ++i) {
+    if (kind == 0) {  // primary: a camera grid
+      const Vec3 dir{((i % side) + 0.5) / side - 0.5, ((i / side) + 0.5) / side - 0.5, 1};
+      out.push_back({{{0, 0, -30}, normalize(dir), 0}, math::kInfinity});
+    } else if (kind == 1) {  // incoherent
+      const Vec3 o{uniform(rng, -10, 10), uniform(rng, -10, 10), uniform(rng, -10, 10)};
+      const Vec3 d{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+      out.push_back({{o, normalize(d), 0}, math::kInfinity});
+    } else {  // shadow: from a triangle's centre towards a light outside the cube
+      const auto& t = soup[rng.next_uint() % soup.size()];
+      const Vec3 p = (t[0] + t[1] + t[2]) / 3.0;
+      const Vec3 light{30, 40, -20};
+      const Vec3 d = light - p;
+      out.push_back({{p, normalize(d), 0}, length(d)});
+    }
+  }
+  return out;
+}
+
+const char* kKindNames[] = {"primary", "random", "shadow"};
+
+/// Embree on its own: a float triangle geometry, high-quality build, one rtcIntersect1 / rtcOccluded1 per
+/// ray with the same origin, direction and window as snell's queries get.
+class RawEmbree {
+ public:
+  explicit RawEmbree(const std::vector<std::array<Vec3, 3>>& soup) {
+    device_ = rtcNewDevice(nullptr);
+    scene_ = rtcNewScene(device_);
+    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), 3 * soup.size()));
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                               3 * sizeof(unsigned), soup.size()));
+    for (size_t i = 0; i < soup.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        for (int a = 0; a < 3; ++a) v[9 * i + 3 * k + a] = static_cast<float>(soup[i][k][a]);
+        idx[3 * i + k] = static_cast<unsigned>(3 * i + k);
+      }
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(scene_, g);
+    rtcReleaseGeometry(g);
+    rtcCommitScene(scene_);
+  }
+  ~RawEmbree() {
+    rtcReleaseScene(scene_);
+    rtcReleaseDevice(device_);
+  }
+  RawEmbree(const RawEmbree&) = delete;
+  RawEmbree& operator=(const RawEmbree&) = delete;
+
+  bool query(const Query& q, bool occlusion) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    RTCRay& r = rh.ray;
+    r.org_x = static_cast<float>(q.ray.origin.x);
+    r.org_y = static_cast<float>(q.ray.origin.y);
+    r.org_z = static_cast<float>(q.ray.origin.z);
+    r.dir_x = static_cast<float>(q.ray.direction.x);
+    r.dir_y = static_cast<float>(q.ray.direction.y);
+    r.dir_z = static_cast<float>(q.ray.direction.z);
+    r.tnear = 1e-4f;
+    r.tfar = std::isinf(q.t_max) ? std::numeric_limits<float>::infinity() : static_cast<float>(q.t_max);
+    r.time = 0;
+    r.mask = ~0u;
+    r.id = 0;
+    r.flags = 0;
+    if (occlusion) {
+      rtcOccluded1(scene_, &context, &r);
+      return r.tfar < 0;
+    }
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &rh);
+    return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+  }
+
+ private:
+  RTCDevice device_;
+  RTCScene scene_;
+};
+
+const std::vector<std::array<Vec3, 3>>& soup() {
+  static const std::vector<std::array<Vec3, 3>> s = triangle_soup(kTriangles);
+  return s;
+}
+
+void count_rays(benchmark::State& state, size_t hits, size_t rays) {
+  benchmark::DoNotOptimize(hits);
+  state.counters["rays/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * rays), benchmark::Counter::kIsRate);
+  state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(state.iterations() * rays);
+}
+
+void raw_embree(benchmark::State& state, int kind) {
+  const RawEmbree embree(soup());
+  const std::vector<Query> qs = queries(soup(), kind);
+  size_t hits = 0;
+  for (auto _ : state)
+    for (const Query& q : qs) hits += embree.query(q, kind == 2);
+  count_rays(state, hits, qs.size());
+}
+
+/// The triangles as separate scene objects (one `triangle` each), or as one `mesh` object.
+scene::Scene triangle_scene(bool as_mesh) {
+  scene::Scene s;
+  if (as_mesh) {
+    geometry::MeshData data;
+    for (const auto& t : soup()) {
+      const int base = static_cast<int>(data.vertices.size());
+      for (const Vec3& v : t) data.vertices.push_back(v);
+      data.faces.push_back({base, base + 1, base + 2});
+    }
+    auto o = std::make_shared<scene::Object>();
+    o->shape = std::make_shared<geometry::Mesh>(std::move(data));
+    s.objects.push_back(std::move(o));
+    return s;
+  }
+  for (const auto& t : soup()) {
+    auto o = std::make_shared<scene::Object>();
+    o->shape = std::make_shared<geometry::Triangle>(t[0], t[1], t[2]);
+    s.objects.push_back(std::move(o));
+  }
+  return s;
+}
+
+void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool as_mesh) {
+  const scene::Scene s = triangle_scene(as_mesh);
+  const auto accel = accel::make_accelerator(accel_kind, s);
+  const std::vector<Query> qs = queries(soup(), kind);
+  size_t hits = 0;
+  for (auto _ : state)
+    for (const Query& q : qs) {
+      if (kind == 2) {
+        hits += accel->occluder(q.ray, 1e-4, q.t_max, scene::RayKind::shadow) != nullptr;
+      } else {
+        scene::SurfaceHit hit;
+        hits += accel->intersect(q.ray, 1e-4, q.t_max, scene::RayKind::camera, hit);
+      }
+    }
+  count_rays(state, hits, qs.size());
+}
+
+void register_all() {
+  for (int kind = 0; kind < 3; ++kind) {
+    const std::string suffix = kKindNames[kind];
+    benchmark::RegisterBenchmark(("triangles/raw_embree_" + suffix).c_str(), raw_embree, kind)
+        ->Unit(benchmark::kMillisecond);
+    for (const char* a : {"embree", "bvh", "octree", "grid"})
+      benchmark::RegisterBenchmark(("triangles/" + std::string(a) + "_" + suffix).c_str(), snell_accel, a,
+                                   kind, false)
+          ->Unit(benchmark::kMillisecond);
+    // One mesh object: Embree walks it as native float triangles (each hit redone in double); the own
+    // accelerators hand it to the mesh's own BVH.
+    for (const char* a : {"embree", "bvh"})
+      benchmark::RegisterBenchmark(("triangles/" + std::string(a) + "_mesh_" + suffix).c_str(), snell_accel,
+                                   a, kind, true)
+          ->Unit(benchmark::kMillisecond);
+  }
+}
+
+const bool registered = (register_all(), true);
+
+}  // namespace
