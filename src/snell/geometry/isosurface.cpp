@@ -159,7 +159,11 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   // (about the cost of one point); any other (natives such as noise run lane by lane) one point at a time.
   constexpr int kLanes = static_cast<int>(function::Function::kMaxLanes);
 
-  const MarchSettings march{lipschitz, accuracy, 0.1 * accuracy};
+  // Roots refined to `accuracy`, as POV-Ray subdivides to it (reference, "accuracy"): the march brackets a
+  // root within its minimum step, `accuracy`, so a bracket is refined by the secant through its ends alone,
+  // with no further evaluation (a tenth of it took 3.3 more evaluations a root; isosurfaces.pov -5.5%
+  // instructions, its SSIM to POV-Ray's image 0.99989 either way).
+  const MarchSettings march{lipschitz, accuracy, accuracy};
   bool more = true;
   double steepest = 0;  // per ray, so the shared maximum is touched once per ray
   const double start = t;
