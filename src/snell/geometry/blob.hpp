@@ -45,9 +45,11 @@ class Blob final : public Shape {
   void collect_pieces(const BlobComponent& comp, const Ray& ray, std::vector<Piece>& pieces) const;
   void find_roots(const Ray& ray, double t_min, double t_max, bool first_only, HitList& out) const;
   LocalHit make_hit(const Vec3& p, double t) const;
+  Bounds3 influence_bounds() const;
 
   double threshold_;
   std::vector<BlobComponent> components_;
+  Bounds3 bounds_;  // influence_bounds(), which every ray clips against
 };
 
 }  // namespace snell::geometry
