@@ -70,18 +70,28 @@ void Isosurface::note_slope(double slope) const {
   }
 }
 
-LocalHit Isosurface::surface_hit(const Ray& ray, double t) const {
+LocalHit Isosurface::surface_hit(const Ray& ray, double t, function::Function::LaneBatch* batch) const {
   // Forward differences with step `accuracy`, as POV-Ray's IsoSurface::Normal: f grows outwards. The
-  // four samples are evaluated together, as four lanes of one run of the function's code.
+  // four samples are evaluated together, as four lanes of one run of the function's code (the march's
+  // batch where it has one: its constants are in place already).
   LocalHit hit;
   hit.t = t;
   const Vec3 p = ray.at(t);
   const double h = settings_.accuracy;
   const double xs[4] = {p.x, p.x + h, p.x, p.x}, ys[4] = {p.y, p.y, p.y + h, p.y},
                zs[4] = {p.z, p.z, p.z, p.z + h};
-  const double* const args[3] = {xs, ys, zs};
   double f[4];
-  settings_.function->call_lanes(args, 4, f);
+  if (batch) {
+    constexpr std::size_t kLanes = function::Function::kMaxLanes;
+    const double* const samples[3] = {xs, ys, zs};
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t l = 0; l < kLanes; ++l) batch->argument(i)[l] = samples[i][l < 4 ? l : 0];
+    const double* values = batch->run();
+    for (std::size_t l = 0; l < 4; ++l) f[l] = values[l];
+  } else {
+    const double* const args[3] = {xs, ys, zs};
+    settings_.function->call_lanes(args, 4, f);
+  }
   hit.normal = {f[1] - f[0], f[2] - f[0], f[3] - f[0]};
   if (!(length_squared(hit.normal) > 0) || !is_finite(hit.normal)) hit.normal = -ray.direction;
   return hit;
@@ -168,30 +178,32 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   double steepest = 0;  // per ray, so the shared maximum is touched once per ray
   const double start = t;
   const bool start_negative = gt < 0;
-  double first_root = hi;  // where the stretch proved free of roots ends
+  double first_root = hi;                          // where the stretch proved free of roots ends
+  function::Function::LaneBatch* batch = nullptr;  // the march's, when it evaluates 8 points at once
   const auto on_root = [&](double root) {
     evaluations.n += 4;  // the normal's samples
     ++evaluations.hits;
     first_root = std::min(first_root, root);
-    sink(surface_hit(ray, root));
+    sink(surface_hit(ray, root, batch));
     more = ++found < limit;
     return more;
   };
   const auto on_slope = [&](double slope) { steepest = std::max(steepest, slope); };
   if (settings_.function->vectorised()) {
     // The points go straight into the function's registers (its constants filled once per ray).
-    function::Function::LaneBatch batch(*settings_.function);
+    function::Function::LaneBatch lanes(*settings_.function);
+    batch = &lanes;
     const auto g_lanes = [&](const double* __restrict ts, int n, double* __restrict out) {
       evaluations.n += static_cast<std::uint64_t>(n);
       // All lanes filled (ts repeats its last point past n): whole registers cost the same.
-      double* __restrict xs = batch.argument(0);
-      double* __restrict ys = batch.argument(1);
-      double* __restrict zs = batch.argument(2);
+      double* __restrict xs = lanes.argument(0);
+      double* __restrict ys = lanes.argument(1);
+      double* __restrict zs = lanes.argument(2);
       const Vec3 o = ray.origin, d = ray.direction;  // locals: the stores below cannot alias them
       for (int i = 0; i < kLanes; ++i) xs[i] = o.x + ts[i] * d.x;
       for (int i = 0; i < kLanes; ++i) ys[i] = o.y + ts[i] * d.y;
       for (int i = 0; i < kLanes; ++i) zs[i] = o.z + ts[i] * d.z;
-      const double* f = batch.run();
+      const double* f = lanes.run();
       const double threshold = settings_.threshold;
       for (int i = 0; i < kLanes; ++i) out[i] = f[i] - threshold;
     };

@@ -61,7 +61,8 @@ class Isosurface final : public Shape {
   /// Crossings of the ray with t in (t_min, t_max), at most `limit` of them, in increasing t.
   template <typename Sink>
   void trace(const Ray& ray, double t_min, double t_max, int limit, Sink&& sink) const;
-  LocalHit surface_hit(const Ray& ray, double t) const;
+  /// The hit at t with its normal; `batch`, where given, evaluates the normal's samples.
+  LocalHit surface_hit(const Ray& ray, double t, function::Function::LaneBatch* batch) const;
   void note_slope(double slope) const;
 
   IsosurfaceSettings settings_;
