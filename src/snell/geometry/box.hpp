@@ -11,6 +11,7 @@ class Box final : public Shape {
 
   Bounds3 bounds() const override;
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  bool crosses(const Ray& ray, double t_min, double t_max) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool span(const Ray& ray, double& t_entry, double& t_exit) const override;
   bool inside(const Vec3& p) const override;
@@ -23,6 +24,8 @@ class Box final : public Shape {
   /// The slab method's entry and exit parameters and the axes of their faces; false on a miss.
   bool slabs(const Ray& ray, double& t0, double& t1, int& axis0, int& axis1) const;
   void gather(const Ray& ray, HitBuffer<2>& hits) const;
+  /// The crossing at `t` through the face across `axis` whose outward normal is `sign` along it.
+  LocalHit face_hit(const Ray& ray, double t, int axis, double sign) const;
 
   Vec3 lo_, hi_;
 };
