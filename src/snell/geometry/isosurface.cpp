@@ -97,7 +97,7 @@ LocalHit Isosurface::surface_hit(const Ray& ray, double t, function::Function::L
   return hit;
 }
 
-template <typename Sink>
+template <bool kNormals, typename Sink>
 void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Sink&& sink) const {
   const Shape& box = *settings_.container;
   double entry_t, exit_t;  // where the ray enters and leaves the container (a graze does neither)
@@ -181,10 +181,16 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
   double first_root = hi;                          // where the stretch proved free of roots ends
   function::Function::LaneBatch* batch = nullptr;  // the march's, when it evaluates 8 points at once
   const auto on_root = [&](double root) {
-    evaluations.n += 4;  // the normal's samples
     ++evaluations.hits;
     first_root = std::min(first_root, root);
-    sink(surface_hit(ray, root, batch));
+    if constexpr (kNormals) {
+      evaluations.n += 4;  // the normal's samples
+      sink(surface_hit(ray, root, batch));
+    } else {
+      LocalHit h;
+      h.t = root;
+      sink(h);
+    }
     more = ++found < limit;
     return more;
   };
@@ -226,7 +232,7 @@ void Isosurface::trace(const Ray& ray, double t_min, double t_max, int limit, Si
 
 bool Isosurface::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
   bool any = false;
-  trace(ray, t_min, t_max, 1, [&](const LocalHit& h) {
+  trace<true>(ray, t_min, t_max, 1, [&](const LocalHit& h) {
     hit = h;
     any = true;
   });
@@ -234,7 +240,14 @@ bool Isosurface::intersect(const Ray& ray, double t_min, double t_max, LocalHit&
 }
 
 void Isosurface::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
-  trace(ray, t_min, t_max, settings_.max_trace, [&](const LocalHit& h) { hits.push_back(h); });
+  trace<true>(ray, t_min, t_max, settings_.max_trace, [&](const LocalHit& h) { hits.push_back(h); });
+}
+
+bool Isosurface::crosses(const Ray& ray, double t_min, double t_max) const {
+  // A shadow ray needs no normal: its four samples were a sixth of a surface point's cost.
+  bool any = false;
+  trace<false>(ray, t_min, t_max, 1, [&](const LocalHit&) { any = true; });
+  return any;
 }
 
 bool Isosurface::inside(const Vec3& p) const {

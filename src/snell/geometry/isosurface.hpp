@@ -40,6 +40,7 @@ class Isosurface final : public Shape {
   Bounds3 bounds() const override;
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
+  bool crosses(const Ray& ray, double t_min, double t_max) const override;
   bool inside(const Vec3& p) const override;
   bool inside_within_bounds() const override { return true; }
   std::string_view kind() const override { return "isosurface"; }
@@ -58,8 +59,9 @@ class Isosurface final : public Shape {
   const IsosurfaceSettings& settings() const { return settings_; }
 
  private:
-  /// Crossings of the ray with t in (t_min, t_max), at most `limit` of them, in increasing t.
-  template <typename Sink>
+  /// Crossings of the ray with t in (t_min, t_max), at most `limit` of them, in increasing t; without
+  /// kNormals the hits of the surface carry only t (the container's walls keep theirs).
+  template <bool kNormals, typename Sink>
   void trace(const Ray& ray, double t_min, double t_max, int limit, Sink&& sink) const;
   /// The hit at t with its normal; `batch`, where given, evaluates the normal's samples.
   LocalHit surface_hit(const Ray& ray, double t, function::Function::LaneBatch* batch) const;
