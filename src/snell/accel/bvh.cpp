@@ -45,7 +45,7 @@ Bvh::Bvh(const scene::Scene& scene) {
     geometry::TriangleBlock& block = blocks_.emplace_back();
     for (uint32_t i = first; i < first + count; ++i) {
       const PlainTriangle& t = plain[tree_.order()[i]];
-      const std::array<math::Vec3, 3>& v = t.shape->vertices();
+      const std::array<math::Vec3, 3>& v = t.vertices;
       const auto world = [&](const math::Vec3& p) { return t.transform ? t.transform->point(p) : p; };
       const int lane = static_cast<int>(block.count);
       block.add(world(v[0]), world(v[1]), world(v[2]), static_cast<uint32_t>(triangles_.size()));
@@ -100,7 +100,11 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
     return hit && done();
   };
   NodeTally tally;
-  tally.add(tree_.walk<L>(ray, nearest.t_min(), nearest.t_max(), leaf));
+  const auto prefetch = [&](uint32_t label) __attribute__((always_inline)) {
+    if (label & kTriangleLeaf)
+      geometry::prefetch_lines(&blocks_[label & ~kTriangleLeaf], sizeof(geometry::TriangleBlock));
+  };
+  tally.add(tree_.walk<L>(ray, nearest.t_min(), nearest.t_max(), leaf, prefetch));
   return nearest.object() != nullptr;
 }
 

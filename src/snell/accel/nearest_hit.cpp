@@ -6,7 +6,7 @@ PlainTriangle plain_triangle(const scene::Object& object) {
   if (object.csg || object.motion || object.bounded_by) return {};
   const auto* shape = dynamic_cast<const geometry::Triangle*>(object.shape.get());
   if (!shape) return {};
-  return {&object, shape, object.transform.is_identity() ? nullptr : &object.transform};
+  return {&object, shape, object.transform.is_identity() ? nullptr : &object.transform, shape->vertices()};
 }
 
 std::vector<PlainTriangle> plain_triangles(const std::vector<const scene::Object*>& objects) {

@@ -37,10 +37,10 @@
 
 namespace snell::geometry {
 
-struct alignas(32) TriangleBlock {
+/// Six cache lines: the first holds the scalars and ids (read first: the accelerator's ray-kind tag), the
+/// other five the vertices, each row of eight floats 32-byte aligned for whole-register loads.
+struct alignas(64) TriangleBlock {
   static constexpr int kSize = 8;
-  /// Vertex k's coordinate a of triangle l is v[k][a][l], rounded to the nearest float.
-  float v[3][3][kSize] = {};
   /// Error scales over the block's triangles: the largest |vertex coordinate| and the longest edge
   /// (infinite where a vertex is beyond float's range: then no lane is ever dropped).
   float magnitude = 0;
@@ -49,8 +49,10 @@ struct alignas(32) TriangleBlock {
   uint32_t count = 0;
   /// The owner's number for each triangle (a face, an object), and 32 bits of its own (the accelerator
   /// keeps which ray kinds see each triangle).
-  uint32_t id[kSize] = {};
   uint32_t tag = 0;
+  uint32_t id[kSize] = {};
+  /// Vertex k's coordinate a of triangle l is v[k][a][l], rounded to the nearest float.
+  alignas(64) float v[3][3][kSize] = {};
 
   /// Puts triangle (a, b, c) in the next lane.
   void add(const math::Vec3& a, const math::Vec3& b, const math::Vec3& c, uint32_t triangle_id) {

