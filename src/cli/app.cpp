@@ -127,7 +127,8 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
                      "gamma the anti-aliasing test compares colours in (POV-Ray +AG, default 2.5)");
   render->add_option("--aa-depth", o.aa_depth,
                      "supersampling depth: depth^2 extra rays (POV-Ray +R, default 3)");
-  render->add_flag("--jitter", o.jitter, "jitter supersamples (POV-Ray +J)");
+  render->add_flag("--jitter,!--no-jitter", o.jitter,
+                   "jitter supersamples as POV-Ray does (the default, +J); --no-jitter: a plain grid (-J)");
   render->add_option("--aa-method", o.aa_method, "anti-aliasing method 1 or 2 (POV-Ray +AM, default 1)");
   render->add_option(
       "--spp", o.samples_per_pixel,

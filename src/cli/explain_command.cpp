@@ -36,7 +36,7 @@ struct ExplainOptions : LayerRequest {
   int height = 240;
   std::optional<double> aa;
   int aa_depth = 3;
-  bool jitter = false;
+  bool jitter = true;  // as POV-Ray and snell render
   std::string accel = "auto";
   std::vector<fs::path> library_paths;
   int threads = 0;
@@ -91,7 +91,8 @@ int run_explain(const std::vector<std::string>& args) {
   app.add_option("-h,--height", o.height, "image height in pixels (default 240)");
   app.add_option("--aa", o.aa, "anti-alias with this threshold (as snell render --aa)");
   app.add_option("--aa-depth", o.aa_depth, "supersampling depth (default 3)");
-  app.add_flag("--jitter", o.jitter, "jitter supersamples");
+  app.add_flag("--jitter,!--no-jitter", o.jitter,
+               "jitter supersamples (the default; --no-jitter: a plain grid)");
   app.add_option("--accel", o.accel, "ray accelerator: embree, bvh, octree, grid or none");
   app.add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   app.add_option("--json", o.json, "also write the ray tree as JSON (docs/explain.schema.json)");

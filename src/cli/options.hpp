@@ -23,9 +23,9 @@ struct CliOptions {
   int height = 600;
   bool antialias = false;
   double aa_threshold = 0.3;
-  double aa_gamma = 2.5;          // POV-Ray +AG / Antialias_Gamma
+  double aa_gamma = 2.5;  // POV-Ray +AG / Antialias_Gamma
   int aa_depth = 3;
-  bool jitter = false;
+  bool jitter = true;  // POV-Ray 3.7 jitters supersamples unless -J (view.cpp: Jitter defaults on)
   double jitter_amount = 1.0;
   int aa_method = 1;              // POV-Ray +AM1 / +AM2
   int samples_per_pixel = 0;      // --spp N (0: POV-Ray anti-aliasing)
@@ -33,7 +33,7 @@ struct CliOptions {
   std::string filter = "box";     // --filter NAME[:RADIUS]
   int threads = 0;
   std::string integrator = "whitted";  // whitted (POV-Ray compatible) or path
-  std::string accel = "auto";  // auto: embree when built, else brute force
+  std::string accel = "auto";          // auto: embree when built, else brute force
   int bits = 8;
   /// Output format by extension, used when the output name has none (POV-Ray +FN/+FE/+FH).
   std::string extension = ".png";
@@ -86,7 +86,8 @@ struct CliOptions {
 };
 
 /// POV-Ray style: `+Iscene.pov +Oout.png +W640 +H480 +A0.3 +R3 +J +Ldir -D +WT4`, plus snell's
-/// `--quiet`, `--stats`, `--threads N`, `--accel NAME`. Known but unsupported POV-Ray switches become warnings; unknown ones throw UsageError.
+/// `--quiet`, `--stats`, `--threads N`, `--accel NAME`. Known but unsupported POV-Ray switches become
+/// warnings; unknown ones throw UsageError.
 CliOptions parse_pov_arguments(const std::vector<std::string>& args);
 
 /// Replaces each ini file among `args` (`scene.ini`, `+Iscene.ini`) by its lines. Throws UsageError.

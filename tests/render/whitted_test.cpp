@@ -62,6 +62,29 @@ TEST(WhittedTest, ShadowedPointGetsOnlyAmbient) {
   EXPECT_NEAR(c.g, 0.05, 1e-9);
 }
 
+TEST(WhittedTest, ShadowlessLightGivesNoHighlights) {
+  // POV-Ray 3.7 draws no phong or specular highlight from a shadowless light (its fill light; trace.cpp,
+  // ComputeOneDiffuseLight): its render of a sphere with specular 0.8 and phong 0.5 lit only by one shows
+  // diffuse light alone. The light straight behind the camera puts both highlights at the sphere's centre.
+  scene::Scene s = lit_sphere_scene();
+  material::Finish shiny;
+  shiny.specular = 0.8;
+  shiny.roughness = 0.01;
+  shiny.phong = 0.5;
+  s.objects[0] = test::object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 0), 1.0),
+                              test::texture({Color(1, 0.5, 0.25)}, shiny));
+  s.lights[0] = test::point_light({0, 0, -6});
+  const auto accel = accel::make_accelerator("none", s);
+  WhittedIntegrator w(s, *accel);
+  TraceContext ctx;
+  const double lit = w.trace_camera_ray({{0, 0, -5}, {0, 0, 1}}, ctx).b;
+  EXPECT_NEAR(lit, 0.25 * 0.7 + 0.8 + 0.5, 1e-6);  // ambient + diffuse, specular, phong
+  s.lights[0].shadowless = true;
+  const auto accel2 = accel::make_accelerator("none", s);
+  WhittedIntegrator w2(s, *accel2);
+  EXPECT_NEAR(w2.trace_camera_ray({{0, 0, -5}, {0, 0, 1}}, ctx).b, 0.25 * 0.7, 1e-6);
+}
+
 TEST(WhittedTest, FilteredShadowIsTintedByTransparentBlocker) {
   scene::Scene s = lit_sphere_scene();
   // rgbf <0.5,1,1,1> blocker: the shadow ray crosses it twice, each time multiplied by filter*rgb.

@@ -86,3 +86,16 @@ TEST(SdlMorePatterns, RemainingPatternsAreNamedInTheError) {
     EXPECT_NE(sdl::test::error_of(ramp_pigment(pattern)).find("is not supported yet"), std::string::npos)
         << pattern;
 }
+
+TEST(SdlMorePatterns, PigmentMapEntriesSeeThePointAsTheOuterWarpsLeaveIt) {
+  // POV-Ray evaluates a pigment map's entries where the outer pigment's warps and transforms took the point
+  // (pigment.cpp, Compute_Pigment). POV-Ray 3.7.0.10 prints these with #debug vstr(3, F(x, y, z), ...)
+  // for F = function { pigment { <the same pigment> } } (float colours: equal to about 1e-7).
+  const std::string scene =
+      "plane { z, 0 pigment { gradient x pigment_map { [0 granite color_map { [0 rgb 0] [1 rgb 1] } "
+      "scale 0.1] [1 bozo color_map { [0 rgb 0] [1 rgb <0,0,1>] } ] } warp { turbulence 0.3 } "
+      "rotate 30*z scale 0.5 } }";
+  EXPECT_NEAR(grey_at(scene, {0.3, 0.7, 0.2}), 0.388222813606, 1e-6);
+  EXPECT_NEAR(grey_at(scene, {-1.25, 2.5, 3.75}), 0.312124460936, 1e-6);
+  EXPECT_NEAR(grey_at(scene, {10.1, -7.3, 0.45}), 0.229761600494, 1e-6);
+}

@@ -1,5 +1,5 @@
 // cells and crackle (POV-Ray 3.7 reference, "cells", "crackle"): ranges, constancy per cube, and the
-// Voronoi distances at points whose answer is known by construction.
+// Voronoi distances at points whose answer is known by construction, and POV-Ray's printed values.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -77,4 +77,23 @@ TEST(CracklePatternTest, OffsetRaisesEveryDistanceAndSolidIsConstantNearAPoint) 
   const double v = cells.value(p);
   EXPECT_GE(v, 0.0);
   EXPECT_LE(v, 1.0);
+}
+
+TEST(CellularPatternsTest, EqualPovRaysValues) {
+  // POV-Ray 3.7.0.10 prints these with #debug str(F(x,y,z),0,12), F = function { pattern { crackle } }
+  // and { pattern { cells } }: the cells' points and values are POV-Ray's own.
+  struct Case {
+    Vec3 p;
+    double crackle, cells;
+  };
+  const Case cases[] = {{{0.3, 0.7, 0.2}, 0.259292193867, 0.711818915326},
+                        {{-1.25, 2.5, 3.75}, 0.474585047892, 0.650118025718},
+                        {{10.1, -7.3, 0.45}, 0.137176938686, 0.705077470047},
+                        {{123.4, 56.7, -89.1}, 0.228793524974, 0.540550424717}};
+  const CracklePattern crackle;
+  const CellsPattern cells;
+  for (const Case& c : cases) {
+    EXPECT_NEAR(crackle.value(c.p), c.crackle, 1e-11);
+    EXPECT_NEAR(cells.value(c.p), c.cells, 1e-11);
+  }
 }

@@ -9,8 +9,8 @@
 #include "snell/math/pcg32.hpp"
 #include "snell/texture/bump_map.hpp"
 #include "snell/texture/facets.hpp"
-#include "snell/texture/lattice_hash.hpp"
 #include "snell/texture/pattern_normal.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 using namespace snell::texture;
 using snell::math::Vec3;
@@ -83,9 +83,9 @@ TEST(FacetsTest, NearestPointIsTheNearestOfTheNeighbourCells) {
     for (int dx = -3; dx <= 3; ++dx)
       for (int dy = -3; dy <= 3; ++dy)
         for (int dz = -3; dz <= 3; ++dz) {
-          const Vec3 c =
-              point_in_cell(static_cast<int>(std::floor(q.x)) + dx, static_cast<int>(std::floor(q.y)) + dy,
-                            static_cast<int>(std::floor(q.z)) + dz);
+          const Vec3 c = povray_point_in_cube(static_cast<int>(std::floor(q.x)) + dx,
+                                              static_cast<int>(std::floor(q.y)) + dy,
+                                              static_cast<int>(std::floor(q.z)) + dz);
           best = std::min(best, length(c - q));
         }
     EXPECT_NEAR(length(found - q), best, 1e-12);

@@ -125,13 +125,16 @@ double f_ridged_mf(const double* a) {  // 59
     return r * r;
   };
   double x = a[0], y = a[1], z = a[2];
-  double signal = ridge(x, y, z), result = signal, frequency = 1;
+  double signal = ridge(x, y, z), result = signal;
+  // frequency^-H with frequency = lacunarity^i: one pow per call (it was most of an isosurface's time).
+  const double step = std::pow(lacunarity, -h);
+  double spectral = 1;
   for (int i = 1; i < octaves; ++i) {
     x *= lacunarity, y *= lacunarity, z *= lacunarity;
-    frequency *= lacunarity;
+    spectral *= step;
     const double weight = std::clamp(signal * gain, 0.0, 1.0);
     signal = ridge(x, y, z) * weight;
-    result += signal * std::pow(frequency, -h);
+    result += signal * spectral;
   }
   return result;
 }

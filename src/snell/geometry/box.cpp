@@ -9,6 +9,11 @@ Box::Box(const Vec3& corner1, const Vec3& corner2) : lo_(min(corner1, corner2)),
   if (!is_finite(lo_) || !is_finite(hi_)) throw std::invalid_argument("box: corners must be finite");
 }
 
+std::shared_ptr<const Shape> Box::placed(const math::Transform& t) const {
+  if (!t.axis_scale()) return nullptr;
+  return std::make_shared<Box>(t.point(lo_), t.point(hi_));
+}
+
 Bounds3 Box::bounds() const {
   return {lo_, hi_};
 }

@@ -15,6 +15,8 @@ class Box final : public Shape {
   bool span(const Ray& ray, double& t_entry, double& t_exit) const override;
   bool inside(const Vec3& p) const override;
   bool inside_within_bounds() const override { return true; }
+  /// Translations and positive scales along the axes: uv (positions across each face) do not change.
+  std::shared_ptr<const Shape> placed(const math::Transform& t) const override;
   std::string_view kind() const override { return "box"; }
 
  private:

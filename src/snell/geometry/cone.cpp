@@ -22,6 +22,13 @@ Cone::Cone(const Vec3& base, double base_radius, const Vec3& cap, double cap_rad
   slope_ = (cap_radius - base_radius) / length_;
 }
 
+std::shared_ptr<const Shape> Cone::placed(const math::Transform& t) const {
+  const auto s = t.uniform_scale();
+  if (!s) return nullptr;
+  return std::make_shared<Cone>(t.point(base_), base_radius_ * *s, t.point(base_ + length_ * w_),
+                                cap_radius_ * *s, open_);
+}
+
 Bounds3 Cone::bounds() const {
   const Vec3 s{std::sqrt(std::max(0.0, 1 - w_.x * w_.x)), std::sqrt(std::max(0.0, 1 - w_.y * w_.y)),
                std::sqrt(std::max(0.0, 1 - w_.z * w_.z))};

@@ -14,6 +14,8 @@ class Cone final : public Shape {
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override;
   bool inside_within_bounds() const override { return true; }
+  /// Translations and uniform scales: the axis keeps its direction, so the frame of uv does too.
+  std::shared_ptr<const Shape> placed(const math::Transform& t) const override;
   std::string_view kind() const override { return "cone"; }
 
  private:

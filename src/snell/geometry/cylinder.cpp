@@ -20,6 +20,12 @@ Cylinder::Cylinder(const Vec3& base, const Vec3& cap, double radius, bool open)
   orthonormal_basis(w_, u_, v_);
 }
 
+std::shared_ptr<const Shape> Cylinder::placed(const math::Transform& t) const {
+  const auto s = t.uniform_scale();
+  if (!s) return nullptr;
+  return std::make_shared<Cylinder>(t.point(base_), t.point(base_ + length_ * w_), radius_ * *s, open_);
+}
+
 Bounds3 Cylinder::bounds() const {
   // Each end disc spans radius * sqrt(1 - w_i^2) along axis i.
   const Vec3 e{radius_ * std::sqrt(std::max(0.0, 1 - w_.x * w_.x)),

@@ -2,11 +2,13 @@
 // The Shape interface: one geometric primitive in its own coordinate space. Objects (scene/object.hpp)
 // add the transform, texture and flags. Rays reaching a shape are already in its space and their
 // direction is NOT unit length (t stays the world-space parameter), so every shape must handle that.
+#include <memory>
 #include <string_view>
 #include <vector>
 
 #include "snell/math/bounds.hpp"
 #include "snell/math/ray.hpp"
+#include "snell/math/transform.hpp"
 #include "snell/math/vec3.hpp"
 
 namespace snell::geometry {
@@ -50,6 +52,11 @@ class Shape {
   virtual bool span(const Ray& ray, double& t_entry, double& t_exit) const;
   /// Whether `p` (shape space) lies inside the solid. Open/flat shapes answer as POV-Ray does.
   virtual bool inside(const Vec3& p) const = 0;
+  /// The same shape moved by `t` into the space `t` maps to, with the same normals and uv at the same
+  /// points, or null when this shape cannot take `t` that way (then the object keeps the transform and
+  /// moves every ray instead). Objects bake simple placements (translate, scale) into their shapes this
+  /// way, as POV-Ray moves a sphere's centre rather than keep a transform.
+  virtual std::shared_ptr<const Shape> placed(const math::Transform& /*t*/) const { return nullptr; }
   /// Whether inside() is false everywhere outside bounds(), so that a box test can answer it there. Not
   /// so for a disc (its whole lower half-space is inside, as in POV-Ray); the shapes that are say so.
   virtual bool inside_within_bounds() const { return false; }

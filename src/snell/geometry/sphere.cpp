@@ -6,6 +6,12 @@
 
 namespace snell::geometry {
 
+std::shared_ptr<const Shape> Sphere::placed(const math::Transform& t) const {
+  const auto s = t.uniform_scale();
+  if (!s) return nullptr;
+  return std::make_shared<Sphere>(t.point(center_), radius_ * *s);
+}
+
 Bounds3 Sphere::bounds() const {
   return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
 }

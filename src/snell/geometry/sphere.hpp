@@ -14,6 +14,8 @@ class Sphere final : public Shape {
   bool span(const Ray& ray, double& t_entry, double& t_exit) const override;
   bool inside(const Vec3& p) const override;
   bool inside_within_bounds() const override { return true; }
+  /// Translations and uniform scales: uv (directions from the centre) do not change.
+  std::shared_ptr<const Shape> placed(const math::Transform& t) const override;
   std::string_view kind() const override { return "sphere"; }
 
   const Vec3& center() const { return center_; }

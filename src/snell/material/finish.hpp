@@ -24,6 +24,7 @@ struct Finish {
   math::Color reflection_max{0};
   bool reflection_fresnel = false;
   double reflection_falloff = 1;
+  /// The power the reflected colour is raised to: 1 / the scene's `exponent` (as POV-Ray stores it).
   double reflection_exponent = 1;
   double reflection_metallic = 0;
   /// snell extension `reflection { ... blur A samples N }`: GGX alpha of glossy reflection (0 = mirror) and

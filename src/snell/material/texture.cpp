@@ -53,9 +53,9 @@ Rgbft layer_pigment(const Texture& layer, const math::Vec3& world_point, const m
     // The entries see the point in the mapped texture's space as their "world".
     const PatternPoint pp = layer_point(layer, world_point, world_normal, uv, ray_direction);
     const TextureSelector::Choice c = layer.selector->at(pp);
-    const Rgbft first = c.first->pigment_at(pp.p, world_normal, uv, ray_direction);
+    const Rgbft first = c.first->pigment_at(c.point, world_normal, uv, ray_direction);
     if (!c.second) return first;
-    return lerp(first, c.second->pigment_at(pp.p, world_normal, uv, ray_direction), c.weight);
+    return lerp(first, c.second->pigment_at(c.point, world_normal, uv, ray_direction), c.weight);
   }
   if (!layer.pigment) return {};
   if (layer.pigment->is_constant()) return layer.pigment->at({});
@@ -85,8 +85,8 @@ math::Vec3 Texture::own_shading_normal(const math::Vec3& world_point, const math
   if (selector) {
     // Each entry bends the normal in its own way; POV-Ray blends the results like colours.
     const TextureSelector::Choice c = selector->at(pp);
-    bent = c.first->shading_normal(pp.p, local, uv);
-    if (c.second) bent = bent * (1 - c.weight) + c.second->shading_normal(pp.p, local, uv) * c.weight;
+    bent = c.first->shading_normal(c.point, local, uv);
+    if (c.second) bent = bent * (1 - c.weight) + c.second->shading_normal(c.point, local, uv) * c.weight;
   } else {
     bent = normal->perturb(local, pp);
   }
@@ -102,7 +102,7 @@ const Finish& Texture::finish_at(const math::Vec3& world_point, const math::Vec3
   const PatternPoint pp = layer_point(*this, world_point, world_normal, {}, ray_direction);
   const TextureSelector::Choice c = selector->at(pp);
   const Texture* dominant = c.second && c.weight > 0.5 ? c.second : c.first;
-  return dominant->finish_at(pp.p, world_normal, ray_direction);
+  return dominant->finish_at(c.point, world_normal, ray_direction);
 }
 
 bool Texture::map_entries_at(const math::Vec3& world_point, const math::Vec3& world_normal,
@@ -118,9 +118,9 @@ bool Texture::map_entries_at(const math::Vec3& world_point, const math::Vec3& wo
   const double weights[2] = {1 - c.weight, c.weight};
   for (int i = 0; i < 2; ++i) {
     const Texture& e = *entries[i];
-    out[i].pigment = e.pigment_at(pp.p, world_normal, uv, ray_direction);
-    out[i].finish = &e.finish_at(pp.p, world_normal, ray_direction);
-    const math::Vec3 bent = transform.normal(e.shading_normal(pp.p, local, uv));
+    out[i].pigment = e.pigment_at(c.point, world_normal, uv, ray_direction);
+    out[i].finish = &e.finish_at(c.point, world_normal, ray_direction);
+    const math::Vec3 bent = transform.normal(e.shading_normal(c.point, local, uv));
     out[i].normal = dot(bent, bent) > 0 ? normalize(bent) : facing_normal;
     out[i].weight = weights[i];
   }

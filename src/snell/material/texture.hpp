@@ -24,6 +24,9 @@ class TextureSelector {
     const Texture* first = nullptr;
     const Texture* second = nullptr;
     double weight = 0;
+    /// Where the entries are evaluated: the point as the map's warps leave it (POV-Ray trace.cpp,
+    /// ComputeOneTextureColour evaluates an entry at the warped point).
+    math::Vec3 point{};
   };
   virtual Choice at(const PatternPoint& point) const = 0;
 };

@@ -56,10 +56,27 @@ class Transform {
   Vec3 inverse_vector(const Vec3& v) const { return identity_ ? v : apply_vector(inv_, v); }
   Vec3 inverse_normal(const Vec3& n) const { return identity_ ? n : apply_transposed_vector(m_, n); }
   /// The ray in the transform's source space; direction is not renormalised, so t is unchanged.
-  Ray inverse_ray(const Ray& r) const { return {inverse_point(r.origin), inverse_vector(r.direction), r.time}; }
+  Ray inverse_ray(const Ray& r) const {
+    return {inverse_point(r.origin), inverse_vector(r.direction), r.time};
+  }
   Bounds3 bounds(const Bounds3& b) const;
 
   bool is_identity() const { return identity_; }
+  /// The factors of a transform that only scales along the axes (by positive factors) and translates;
+  /// nullopt for any other (rotations, shears, mirrors).
+  std::optional<Vec3> axis_scale() const {
+    const auto& m = m_.m;
+    if (m[0][1] != 0 || m[0][2] != 0 || m[1][0] != 0 || m[1][2] != 0 || m[2][0] != 0 || m[2][1] != 0)
+      return std::nullopt;
+    if (!(m[0][0] > 0 && m[1][1] > 0 && m[2][2] > 0)) return std::nullopt;
+    return Vec3{m[0][0], m[1][1], m[2][2]};
+  }
+  /// The factor of a transform that scales uniformly (by a positive factor) and translates, else nullopt.
+  std::optional<double> uniform_scale() const {
+    const auto s = axis_scale();
+    if (!s || s->x != s->y || s->x != s->z) return std::nullopt;
+    return s->x;
+  }
   const Matrix4& matrix() const { return m_; }
   const Matrix4& inverse_matrix() const { return inv_; }
 

@@ -18,12 +18,12 @@ constexpr double kEpsilon = 1e-10;
 constexpr double kMaxDistance = 1e7;
 
 Color exp_neg(const Color& c) {
+  // Grey media (the usual case) thin every channel alike: one exp, the same value.
+  if (c.r == c.g && c.g == c.b) {
+    const double e = std::exp(-c.r);
+    return {e, e, e};
+  }
   return {std::exp(-c.r), std::exp(-c.g), std::exp(-c.b)};
-}
-
-/// Mean of exp(-x s) over s in [0, 1]: how much of light emitted evenly across optical depth x escapes.
-double self_thinning(double x) {
-  return x != 0 ? (1.0 - std::exp(-x)) / x : 1.0;
 }
 
 double colour_distance(const Color& a, const Color& b) {
@@ -223,31 +223,28 @@ class MediaSampler {
     optical = extinction * iv.ds;
   }
 
-  /// Method 3 over one interval.
+  /// Method 3 over one interval as POV-Ray 3.7 does it (media.cpp, ComputeMediaAdaptiveSampling):
+  /// samples/2 + 1 sub-intervals (at least two), each 1/(count + 1) of the interval long, so the last
+  /// such piece of the interval goes unsampled; each refined by midpoints, its emission thinned only by the
+  /// sub-intervals before it (not within itself). POV-Ray 3.8 changed all three; 3.7's output is the
+  /// reference.
   void adaptive(Interval& iv) {
     const Media& m = lead_;
-    const int n = std::max(1, (m.min_samples + 1) / 2);
-    const double dd = 1.0 / n;
+    const int count = std::max(2, m.min_samples / 2 + 1);
+    const double dd = 1.0 / (count + 1);
     Color c0, od0;
     sample(iv, dd * m.jitter * (rng_.next_double() - 0.5), c0, od0);
-    double d0 = 0;
-    for (int j = 1; j <= n; ++j) {
-      const double d1 = d0 + dd;
+    double d0 = dd;
+    for (int j = 1; j <= count; ++j, d0 += dd) {
       Color c1, od1, result, result_od;
-      sample(iv, d1 + dd * m.jitter * (rng_.next_double() - 0.5), c1, od1);
-      refine(iv, d0, d1, c0, c1, od0, od1, m.aa_level - 1, result, result_od);
-      // Thinned by the sub-intervals before this one, and within itself as if emission and extinction
-      // kept their ratio across it.
-      result *= exp_neg(iv.optical * dd);
-      result = {result.r * self_thinning(result_od.r * dd), result.g * self_thinning(result_od.g * dd),
-                result.b * self_thinning(result_od.b * dd)};
-      iv.emitted += result;
+      sample(iv, d0 + dd * m.jitter * (rng_.next_double() - 0.5), c1, od1);
+      refine(iv, d0 - dd, d0, c0, c1, od0, od1, m.aa_level - 1, result, result_od);
+      iv.emitted += result * exp_neg(iv.optical / count);
       iv.optical += result_od;
       c0 = c1;
       od0 = od1;
-      d0 = d1;
     }
-    iv.samples = n;
+    iv.samples = count;
   }
 
   /// Methods 1 and 2: `min_samples` random (1) or jittered evenly spaced (2) samples.
@@ -332,7 +329,9 @@ MediaEffect media_along(const std::vector<const Media*>& media, const std::vecto
   if (media.empty() || !(depth > 0)) return effect;
   std::vector<LitLight> lit;
   for (const scene::Light& light : lights) {
-    if (!light.media_interaction) continue;
+    // A shadowless light is POV-Ray's fill light, a kind its media never gather light from (media.cpp,
+    // ComputeOneMediaLightInterval knows point, spot and cylinder lights only).
+    if (!light.media_interaction || light.shadowless) continue;
     double t0 = 0, t1 = 0;
     if (light_interval(light, ray, t0, t1) && t0 < depth && t1 > 1e-6)
       lit.push_back({&light, std::max(t0, 0.0), std::min(t1, depth)});
@@ -361,15 +360,42 @@ Color media_transmittance(const std::vector<const Media*>& media, const math::Ra
     for (const Media* m : media) extinction += m->extinction();
     return exp_neg(extinction * depth);
   }
-  // Varying density: midpoint rule over as many pieces as the media would sample.
-  int pieces = 1;
-  for (const Media* m : media) pieces = std::max(pieces, m->intervals * m->min_samples);
-  const double step = depth / pieces;
-  for (int i = 0; i < pieces; ++i) {
-    const Vec3 p = ray.at((i + 0.5) * step);
-    for (const Media* m : media) extinction += m->density_at(p) * m->extinction();
+  // Varying density, sampled as POV-Ray 3.7 samples a shadow ray (media.cpp, ComputeMedia without lights):
+  // the lead medium's intervals, each its method's samples. Emission is not computed on shadow rays, so
+  // method 3 never refines: each of its sub-intervals averages its two ends and its middle. Jitter is left
+  // out (the grid it perturbs is kept), and method 1's random samples are taken stratified: the same mean,
+  // without noise.
+  const Media* lead = media.front();
+  for (const Media* m : media)
+    if (m->intervals > lead->intervals) lead = m;
+  const int intervals = std::max(1, lead->intervals);
+  const double ds = depth / intervals;
+  auto extinction_at = [&](double t) {
+    Color e(0);
+    const Vec3 p = ray.at(t);
+    for (const Media* m : media) e += (m->densities.empty() ? Color(1) : m->density_at(p)) * m->extinction();
+    return e;
+  };
+  for (int i = 0; i < intervals; ++i) {
+    const double s0 = i * ds;
+    Color sum(0);
+    if (lead->method == 3) {
+      const int count = std::max(2, lead->min_samples / 2 + 1);
+      const double dd = 1.0 / (count + 1);
+      Color previous = extinction_at(s0);
+      for (int j = 1; j <= count; ++j) {
+        const Color next = extinction_at(s0 + j * dd * ds);
+        sum += (previous + extinction_at(s0 + (j - 0.5) * dd * ds) + next) / 3.0;
+        previous = next;
+      }
+      extinction += sum / count;
+    } else {
+      const int samples = std::max(1, lead->min_samples);
+      for (int j = 0; j < samples; ++j) sum += extinction_at(s0 + (j + 0.5) / samples * ds);
+      extinction += sum / samples;
+    }
   }
-  return exp_neg(extinction * step);
+  return exp_neg(extinction * ds);
 }
 
 }  // namespace snell::render

@@ -25,6 +25,7 @@
 #include "snell/scene/blur_confidence.hpp"
 #include "snell/scene/hex_lens_grid.hpp"
 #include "snell/scene/lens_samples.hpp"
+#include "snell/texture/povray_noise.hpp"
 
 namespace snell::render {
 
@@ -35,20 +36,24 @@ using math::Color;
 constexpr unsigned kFlushDenormals = 0x8040;
 #endif
 
-math::Vec2 sample_position(const RenderOptions& options, int x, int y, int k, math::Pcg32& rng) {
+math::Vec2 sample_position(const RenderOptions& options, int x, int y, int k) {
   const double w = options.width, h = options.height;
   if (k == 0) return {(x + 0.5) / w, (y + 0.5) / h};
   const int n = options.aa_depth;
   const int i = (k - 1) % n, j = (k - 1) / n;
   double dx = (i + 0.5) / n, dy = (j + 0.5) / n;
   if (options.jitter) {
-    const uint64_t pixel =
-        static_cast<uint64_t>(y) * static_cast<uint64_t>(options.width) + static_cast<uint64_t>(x);
-    rng.seed(
-        math::mix_seed(pixel, static_cast<uint64_t>(k), static_cast<uint64_t>(options.frame), options.seed),
-        0xda3e39cb94b95bdbULL);
-    dx += options.jitter_amount * (rng.next_double() - 0.5) / n;
-    dy += options.jitter_amount * (rng.next_double() - 0.5) / n;
+    // POV-Ray's jitter (tracetask.cpp, SupersampleOnePixel; jitter.h, Jitter2d): a fixed offset for each
+    // sub-sample's point, looked up from where it lies with pixel centres at integers, its grid offsets
+    // summed step by step as POV-Ray sums them, scaled by the amount (at most 1) over the grid size.
+    const double step = 1.0 / n, range = 0.5 - step * 0.5;
+    double xx = -range, yy = -range;
+    for (int s = 0; s < i; ++s) xx += step;
+    for (int s = 0; s < j; ++s) yy += step;
+    const math::Vec2 r = texture::povray_jitter2d(x + xx, y + yy);
+    const double scale = std::clamp(options.jitter_amount, 0.0, 1.0) / n;
+    dx += r.u * scale;
+    dy += r.v * scale;
   }
   return {(x + dx) / w, (y + dy) / h};
 }
@@ -261,27 +266,23 @@ RenderStats Renderer::render_into(io::Image& image) const {
       }
   };
 
-  // Pass 2 (POV-Ray "Anti-Aliasing Options", method 1): a pixel that differs from a neighbour by more than
-  // the threshold gets depth x depth more samples on a sub-pixel grid, averaged with its first sample.
-  // `first(x, y)` is the first-pass colour of any pixel of the tile or its one-pixel border.
-  // `encoded(x, y)` is that colour through aa_encoded; POV-Ray supersamples at a distance >= the threshold.
-  auto supersample = [&](int x, int y, const auto& first, const auto& encoded, TraceContext& ctx) {
-    const Color c = first(x, y);
-    const bool differs = differs_from_neighbour(x, y, w, h, options_.aa_threshold, encoded);
-    if (!differs) return c;
+  // Pass 2 (POV-Ray "Anti-Aliasing Options", method 1): a pixel that differs from its left or top neighbour
+  // by at least the threshold gets depth x depth more samples on a sub-pixel grid, averaged with its first
+  // sample, in POV-Ray's order over the tile (aa_neighbours.hpp).
+  auto supersample = [&](int x, int y, const Color& c, TraceContext& ctx) {
     ++ctx.supersampled_pixels;
     const int n = options_.aa_depth;
     Color sum = c;
     for (int k = 1; k <= n * n; ++k) {
-      const math::Vec2 p = sample_position(options_, x, y, k, ctx.rng);
+      const math::Vec2 p = sample_position(options_, x, y, k);
       sum += focal_blur ? blurred_sample(x, y, k, p.u * w, p.v * h, ctx) : trace_point(p.u, p.v, ctx);
     }
     return sum / static_cast<double>(n * n + 1);
   };
 
-  // Each tile is self-contained: with anti-aliasing it traces the first pass over itself and a one-pixel
-  // border (first-pass samples depend only on their pixel), so its pixels are the same whichever tiles,
-  // ranks or resumed runs render the rest of the image.
+  // Each tile is self-contained: with anti-aliasing it traces the first pass over itself, the row above and
+  // the column to its left (first-pass samples depend only on their pixel), so its pixels are the same
+  // whichever tiles, ranks or resumed runs render the rest of the image.
   auto render_tile = [&](const Tile& tile) {
   // Same denormal handling on every thread: Embree's threads flush denormals to zero and a caller's may
   // not, and a pixel must not depend on which thread traced it.
@@ -297,22 +298,27 @@ RenderStats Renderer::render_into(io::Image& image) const {
       for (int y = t.y0; y < t.y1; ++y)
         for (int x = t.x0; x < t.x1; ++x) image.set(x, y, first_sample(x, y, ctx));
     } else {
-      const PixelRect b{std::max(t.x0 - 1, 0), std::max(t.y0 - 1, 0), std::min(t.x1 + 1, w),
-                        std::min(t.y1 + 1, h)};
-      const int bw = b.x1 - b.x0;
-      std::vector<Color> first(static_cast<size_t>(b.area())), encoded(first.size());
-      for (int y = b.y0; y < b.y1; ++y)
-        for (int x = b.x0; x < b.x1; ++x) {
-          const size_t i = static_cast<size_t>(y - b.y0) * bw + (x - b.x0);
-          first[i] = first_sample(x, y, ctx);
-          encoded[i] = aa_encoded(first[i], options_.aa_compare_exponent);
-        }
-      auto first_at = [&](int x, int y) { return first[static_cast<size_t>(y - b.y0) * bw + (x - b.x0)]; };
-      auto encoded_at = [&](int x, int y) {
-        return encoded[static_cast<size_t>(y - b.y0) * bw + (x - b.x0)];
+      // A tile is one of POV-Ray's render blocks (both 32 pixels, aligned with the image): its first samples,
+      // and those of the row above and the column to the left, outside the image too as POV-Ray traces them.
+      // A tile cut by a partial render's region is worked whole, as its pixels' turns depend on the rest.
+      const PixelRect f = full_tile_rect(tile.index, w, h);
+      const int fw = f.x1 - f.x0 + 1;
+      std::vector<Color> first(static_cast<size_t>(fw) * (f.y1 - f.y0 + 1));
+      auto first_index = [&](int x, int y) {
+        return static_cast<size_t>(y - f.y0 + 1) * fw + (x - f.x0 + 1);
       };
+      for (int x = f.x0; x < f.x1; ++x) first[first_index(x, f.y0 - 1)] = first_sample(x, f.y0 - 1, ctx);
+      for (int y = f.y0; y < f.y1; ++y)
+        for (int x = f.x0 - 1; x < f.x1; ++x) first[first_index(x, y)] = first_sample(x, y, ctx);
+      std::vector<Color> out;
+      std::vector<char> refined;
+      supersample_block(
+          f, options_.aa_threshold, options_.aa_compare_exponent,
+          [&](int x, int y) { return first[first_index(x, y)]; },
+          [&](int x, int y, const Color& c) { return supersample(x, y, c, ctx); }, out, refined);
       for (int y = t.y0; y < t.y1; ++y)
-        for (int x = t.x0; x < t.x1; ++x) image.set(x, y, supersample(x, y, first_at, encoded_at, ctx));
+        for (int x = t.x0; x < t.x1; ++x)
+          image.set(x, y, out[static_cast<size_t>(y - f.y0) * (fw - 1) + (x - f.x0)]);
     }
     for (int y = t.y0; y < t.y1; ++y)
       for (int x = t.x0; x < t.x1; ++x) image.set_alpha(x, y, 1.0f);

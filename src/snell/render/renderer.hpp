@@ -95,8 +95,9 @@ class Renderer {
 };
 
 /// Where sample `k` of pixel (x, y) lies in the image (0..1 across and down): k = 0 is the first pass's
-/// pixel centre, k = 1..aa_depth^2 the supersampling grid row by row, jittered when options.jitter.
-math::Vec2 sample_position(const RenderOptions& options, int x, int y, int k, math::Pcg32& rng);
+/// pixel centre, k = 1..aa_depth^2 the supersampling grid row by row, jittered as POV-Ray jitters it when
+/// options.jitter.
+math::Vec2 sample_position(const RenderOptions& options, int x, int y, int k);
 /// Seeds `rng` for the camera sample at image point (sx, sy), so its random numbers (area light jitter)
 /// depend only on where it falls, never on threads or tiles.
 void seed_camera_sample(math::Pcg32& rng, double sx, double sy, const RenderOptions& options);

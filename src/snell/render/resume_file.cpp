@@ -30,14 +30,6 @@ T get(std::ifstream& in, const fs::path& path) {
   return value;
 }
 
-/// The rectangle tile `index` has in a width x height image, clipped to nothing else.
-PixelRect full_tile_rect(int index, int width, int height) {
-  const int across = tiles_across(width);
-  const int tx = index % across, ty = index / across;
-  return {tx * kTileSize, ty * kTileSize, std::min((tx + 1) * kTileSize, width),
-          std::min((ty + 1) * kTileSize, height)};
-}
-
 bool inside(const PixelRect& inner, const PixelRect& outer) {
   return inner.x0 >= outer.x0 && inner.y0 >= outer.y0 && inner.x1 <= outer.x1 && inner.y1 <= outer.y1;
 }

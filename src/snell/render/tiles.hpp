@@ -31,6 +31,9 @@ struct Tile {
 int tiles_across(int width);
 int tiles_down(int height);
 
+/// The rectangle tile `index` has in a width x height image, clipped to nothing but the image.
+PixelRect full_tile_rect(int index, int width, int height);
+
 /// The tiles of a width x height image that meet `region`, clipped to it, in index order.
 std::vector<Tile> make_tiles(int width, int height, const PixelRect& region);
 

@@ -498,7 +498,7 @@ Color WhittedIntegrator::direct_light(const ShadingPoint& sp, TraceContext& cont
       });
       if (max_abs(lc) < kEpsilon) continue;
     }
-    sum += surface_response(sp, lr.direction, lc);
+    sum += surface_response(sp, lr.direction, lc, !light.shadowless);
   }
   return sum;
 }
@@ -532,13 +532,14 @@ Color WhittedIntegrator::full_area_light(const ShadingPoint& sp, const scene::Li
       const Vec3 offset = area_light_sample_offset(light, axis1, axis2, u, v, context.rng);
       const LightRay r = light_direction(light, sp.point, offset);
       if (!double_illuminate && dot(sp.normal, r.direction) < kEpsilon) continue;
-      sum += surface_response(sp, r.direction, part * light_attenuation(light, sp.point, r));
+      sum +=
+          surface_response(sp, r.direction, part * light_attenuation(light, sp.point, r), !light.shadowless);
     }
   return sum;
 }
 
-Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to_light,
-                                          const Color& lc) const {
+Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to_light, const Color& lc,
+                                          bool highlights) const {
   const material::Finish& f = *sp.finish;
   const Color& pigment = sp.pigment.rgb;
   const Vec3& eye = sp.ray->direction;
@@ -553,7 +554,9 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
     if (sp.observer) sp.observer->term(RayTerm::diffuse, intensity * pigment, intensity * pigment * lc);
   }
   // Phong: the mirror direction of the eye against the light direction, to the power phong_size.
-  if (f.phong > 0 && sp.highlights) {
+  // A shadowless light gives none (trace.cpp, ComputeOneDiffuseLight skips them for fill lights).
+  highlights = highlights && sp.highlights;
+  if (f.phong > 0 && highlights) {
     const double c = dot(math::reflect(eye, sp.normal), to_light);
     if (c > 0) {
       const double intensity = f.phong * std::pow(c, f.phong_size);
@@ -563,7 +566,7 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
     }
   }
   // Specular: Blinn's halfway vector, exponent 1/roughness.
-  if (f.specular > 0 && sp.highlights) {
+  if (f.specular > 0 && highlights) {
     const Vec3 h = 0.5 * (to_light - eye);
     const double hl = length(h);
     if (hl > 0) {

@@ -72,9 +72,10 @@ class WhittedIntegrator final : public Integrator {
                           TraceContext& context) const;
   /// An `area_illumination` light: each grid point shades the surface from its own direction.
   math::Color full_area_light(const ShadingPoint& sp, const scene::Light& light, TraceContext& context) const;
-  /// Diffuse, phong and specular light reflected towards the eye from light `lc` arriving along `to_light`.
-  math::Color surface_response(const ShadingPoint& sp, const math::Vec3& to_light,
-                               const math::Color& lc) const;
+  /// Diffuse, phong and specular light reflected towards the eye from light `lc` arriving along `to_light`;
+  /// phong and specular only with `highlights` (not from shadowless lights, POV-Ray's fill lights).
+  math::Color surface_response(const ShadingPoint& sp, const math::Vec3& to_light, const math::Color& lc,
+                               bool highlights = true) const;
   /// Diffuse light re-emitted by a `subsurface` finish (render/subsurface.hpp), replacing the diffuse term.
   math::Color subsurface_light(const ShadingPoint& sp, const scene::Object* solid, double relative_ior,
                                TraceContext& context) const;

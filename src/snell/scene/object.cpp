@@ -22,6 +22,14 @@ void move_hit(SurfaceHit& hit, const Ray& ray, const math::Transform& d) {
 
 }  // namespace
 
+void Object::bake_placement() {
+  if (!shape || csg || motion || transform.is_identity()) return;
+  if (auto placed = shape->placed(transform)) {
+    shape = std::move(placed);
+    transform = math::Transform{};
+  }
+}
+
 SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& local) const {
   SurfaceHit hit;
   hit.t = local.t;

@@ -114,6 +114,9 @@ struct Object {
                        bool outer_inverse = false) const;
   void all_hits_still(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
                       bool outer_inverse = false) const;
+  /// Moves a simple placement (translate, scale) into the shape itself when the shape can take it
+  /// (Shape::placed), so that no ray has to be moved into the object's space; moving objects keep it.
+  void bake_placement();
   /// Builds the world-space hit from a shape-space hit of `world_ray` (transformed into object space).
   SurfaceHit to_world(const Ray& world_ray, const geometry::LocalHit& local) const;
 };

@@ -8,6 +8,16 @@
 
 namespace snell::sdl {
 
+namespace {
+
+/// POV-Ray keeps the reciprocal of a reflection's `exponent` (and of `reflection_exponent`) and raises the
+/// reflected colour to that (parstxtr.cpp: Reflect_Exp = 1 / value): `exponent 0.8` is colour^1.25.
+double reflection_exponent_of(double value) {
+  return 1.0 / value;
+}
+
+}  // namespace
+
 std::optional<math::Transform> Parser::parse_transform_item() {
   const Token t = peek();
   if (t.kind != Token::Kind::identifier) return std::nullopt;
@@ -150,7 +160,7 @@ void Parser::parse_reflection(material::Finish& f) {
       }
       if (w == "exponent") {
         raw_next();
-        f.reflection_exponent = parse_float();
+        f.reflection_exponent = reflection_exponent_of(parse_float());
         continue;
       }
       if (w == "metallic") {
@@ -221,7 +231,7 @@ material::Finish Parser::parse_finish_block(const material::Finish& base) {
     } else if (w == "transmission") {
       parse_transmission(f);
     } else if (w == "reflection_exponent") {
-      f.reflection_exponent = parse_float();
+      f.reflection_exponent = reflection_exponent_of(parse_float());
     } else if (w == "conserve_energy") {
       f.conserve_energy = parse_bool_optional(true);
     } else if (w == "subsurface") {

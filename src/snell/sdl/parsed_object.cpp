@@ -144,6 +144,7 @@ ObjectPtr build(const ParsedObject& o, const Inherited& parent, std::vector<scen
   if (o.shape) {
     object = make_object(o, own);
     object->shape = o.shape;
+    object->bake_placement();
   } else if (!o.children.empty()) {
     std::vector<ObjectPtr> children;
     for (const auto& child : o.children) {

@@ -95,10 +95,10 @@ struct Parser::PigmentBuilder {
       plain = texture::transform_pigment(plain, t);
       return;
     }
+    // The map's or blocks' pigments move with the pattern through the point: they are evaluated where this
+    // pigment's warps, transforms included, take it (POV-Ray's Transform_Tpattern adds to the pattern's
+    // own warps only; Compute_Pigment evaluates an entry at the warped point).
     spec.warps.push(std::make_shared<texture::TransformWarp>(t));
-    // Sub-pigments already given move with the pattern (POV-Ray transforms the map's pigments too).
-    for (auto& e : spec.block_entries) e = texture::transform_pigment(e, t);
-    for (auto& e : pigment_entries) e.second = texture::transform_pigment(e.second, t);
   }
 
   /// The pattern, wave and warps as written (for a pigment or a normal).

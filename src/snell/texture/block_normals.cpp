@@ -12,9 +12,12 @@ BlockNormal::BlockNormal(std::shared_ptr<const BlockPattern> blocks, WarpList wa
 }
 
 math::Vec3 BlockNormal::perturb(const math::Vec3& normal, const material::PatternPoint& point) const {
-  // As with pigments, the block is chosen at the warped point and its normal sees the point itself.
-  const NormalPtr& entry = entries_[static_cast<std::size_t>(blocks_->block(warps_.apply(point.p)))];
-  return entry ? entry->perturb(normal, point) : normal;
+  // As with pigments, the block is chosen at the warped point and its normal sees that point (POV-Ray
+  // normal.cpp, Perturb_Normal).
+  material::PatternPoint warped = point;
+  warped.p = warps_.apply(point.p);
+  const NormalPtr& entry = entries_[static_cast<std::size_t>(blocks_->block(warped.p))];
+  return entry ? entry->perturb(normal, warped) : normal;
 }
 
 }  // namespace snell::texture

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "snell/texture/lattice_hash.hpp"
 #include "snell/texture/povray_noise.hpp"
 
 namespace snell::texture {
 
 namespace {
 
-/// Keeps p on the cube it belongs to when it lies on a face within rounding (a plane at y=0).
+/// POV-Ray's EPSILON: cells rounds coordinates within it of an integer up, crackle down (pattern.cpp).
 constexpr double kFaceTolerance = 1e-10;
 
 int cell_of(double x) {
@@ -33,21 +32,25 @@ double minkowski_root(double sum, double metric) {
 }  // namespace
 
 double CellsPattern::value(const Vec3& p) const {
-  return lattice_random(cell_of(p.x), cell_of(p.y), cell_of(p.z));
+  return std::min(
+      povray_pattern_random(static_cast<size_t>(povray_hash3d(cell_of(p.x), cell_of(p.y), cell_of(p.z)))),
+      1.0);
 }
 
 double CracklePattern::value(const Vec3& p) const {
   const double metric = params_.metric;
-  const int cx = cell_of(p.x), cy = cell_of(p.y), cz = cell_of(p.z);
+  auto cell = [](double x) { return static_cast<int>(std::floor(x - kFaceTolerance)); };
+  const int cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
   // With one point per cube, the three nearest points lie in the 3x3x3 block around p or in the cubes
-  // glued onto its faces (two cubes away along one axis only): 27 + 6*9 = 81 candidates.
+  // glued onto its faces (two cubes away along one axis only): 27 + 6*9 = 81 candidates, visited in
+  // POV-Ray's order (which decides ties).
   double nearest[3] = {INFINITY, INFINITY, INFINITY};
   Vec3 nearest_point{0, 0, 0};
-  for (int dz = -2; dz <= 2; ++dz) {
+  for (int dx = -2; dx <= 2; ++dx) {
     for (int dy = -2; dy <= 2; ++dy) {
-      for (int dx = -2; dx <= 2; ++dx) {
+      for (int dz = -2; dz <= 2; ++dz) {
         if ((std::abs(dx) == 2) + (std::abs(dy) == 2) + (std::abs(dz) == 2) > 1) continue;
-        const Vec3 q = point_in_cell(cx + dx, cy + dy, cz + dz);
+        const Vec3 q = povray_point_in_cube(cx + dx, cy + dy, cz + dz);
         const double d = minkowski(q - p, metric);
         if (d < nearest[0]) {
           nearest[2] = nearest[1];

@@ -1,7 +1,7 @@
 #pragma once
 // Patterns built on one random point per unit cube (POV-Ray 3.7 reference, "cells", "crackle"): a
-// Voronoi diagram of those points. The points come from texture/lattice_hash.hpp, not POV-Ray's own
-// generator, so the cells have the same size and character as POV-Ray's but sit elsewhere.
+// Voronoi diagram of those points. The points and cell values are POV-Ray's own (povray_hash3d and
+// povray_pattern_random), so the cells sit where POV-Ray's do.
 #include "snell/math/vec3.hpp"
 #include "snell/texture/pattern.hpp"
 #include "snell/texture/povray_noise.hpp"

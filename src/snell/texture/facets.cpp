@@ -3,14 +3,14 @@
 #include <cmath>
 #include <limits>
 
-#include "snell/texture/lattice_hash.hpp"
 #include "snell/texture/povray_noise.hpp"
 
 namespace snell::texture {
 
 Vec3 FacetsPattern::nearest_point(const Vec3& q) const {
-  const int cx = static_cast<int>(std::floor(q.x)), cy = static_cast<int>(std::floor(q.y)),
-            cz = static_cast<int>(std::floor(q.z));
+  // POV-Ray's PickInCube rounds coordinates within EPSILON above an integer down (normal.cpp, facets).
+  auto cell = [](double x) { return static_cast<int>(std::floor(x - 1e-10)); };
+  const int cx = cell(q.x), cy = cell(q.y), cz = cell(q.z);
   const double m = params_.metric;
   double best = std::numeric_limits<double>::infinity();
   Vec3 nearest = q;
@@ -20,7 +20,7 @@ Vec3 FacetsPattern::nearest_point(const Vec3& q) const {
     for (int dy = -2; dy <= 2; ++dy)
       for (int dz = -2; dz <= 2; ++dz) {
         if ((std::abs(dx) == 2) + (std::abs(dy) == 2) + (std::abs(dz) == 2) > 1) continue;
-        const Vec3 c = point_in_cell(cx + dx, cy + dy, cz + dz);
+        const Vec3 c = povray_point_in_cube(cx + dx, cy + dy, cz + dz);
         const Vec3 d = c - q;
         const double distance = m == 2   ? dot(d, d)
                                 : m == 1 ? d.x + d.y + d.z  // POV-Ray's metric 1 sums signed offsets

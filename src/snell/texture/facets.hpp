@@ -5,7 +5,7 @@
 //   unit cube, so a curved surface looks cut into flat facets;
 // - with coords c the surface point (times 1/size) picks the nearest point, whose noise vector, made
 //   tangent to the surface, tilts the normal by c: flat-looking cells on any surface.
-// The random points are snell's (lattice_hash.hpp), not POV-Ray's, so the facets lie elsewhere.
+// The random points are POV-Ray's (povray_point_in_cube), so the facets lie where POV-Ray's do.
 #include "snell/texture/pattern.hpp"
 
 namespace snell::texture {

@@ -93,12 +93,15 @@ Vec3 PatternNormal::perturb(const Vec3& normal, const material::PatternPoint& po
 }
 
 Vec3 PatternNormal::perturb_by_map(const Vec3& normal, const material::PatternPoint& point) const {
-  const double value = spec_.wave.apply(spec_.pattern->value(spec_.warps.apply(pattern_point(point))));
+  // The entries see the point where this pattern's warps took it (POV-Ray normal.cpp, Perturb_Normal).
+  material::PatternPoint warped = point;
+  warped.p = spec_.warps.apply(pattern_point(point));
+  const double value = spec_.wave.apply(spec_.pattern->value(warped.p));
   const auto& map = spec_.normal_map;
   const MapBracket bracket = map_bracket(map, value);
-  const Vec3 b = map[bracket.upper].second->perturb(normal, point);
+  const Vec3 b = map[bracket.upper].second->perturb(normal, warped);
   if (bracket.lower == bracket.upper) return b;
-  const Vec3 a = map[bracket.lower].second->perturb(normal, point);
+  const Vec3 a = map[bracket.lower].second->perturb(normal, warped);
   const Vec3 blend = a * (1 - bracket.weight) + b * bracket.weight;
   return dot(blend, blend) > 0 ? normalize(blend) : normal;
 }

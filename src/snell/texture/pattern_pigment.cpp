@@ -37,11 +37,15 @@ PatternPigment::PatternPigment(PatternSpec spec) : spec_(std::move(spec)) {
 }
 
 material::Rgbft PatternPigment::at(const material::PatternPoint& point) const {
-  const Vec3 p = spec_.warps.apply(point.p);
-  if (spec_.block_pattern) return spec_.block_entries[spec_.block_pattern->block(p)]->at(point);
+  // The entries of a pigment map or block pattern see the point as this pigment's warps left it, as the
+  // pattern did (POV-Ray pigment.cpp, Compute_Pigment: Warp_EPoint, then the entry at TPoint).
+  material::PatternPoint warped = point;
+  warped.p = spec_.warps.apply(point.p);
+  const Vec3& p = warped.p;
+  if (spec_.block_pattern) return spec_.block_entries[spec_.block_pattern->block(p)]->at(warped);
   const double v =
       spec_.wave.apply(spec_.value_pattern->value_at(p, point.world_normal, point.ray_direction));
-  if (spec_.pigment_map) return spec_.pigment_map->at(v, point);
+  if (spec_.pigment_map) return spec_.pigment_map->at(v, warped);
   return spec_.color_map->at(v);
 }
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <random>
+#include <vector>
 
 namespace snell::texture {
 
@@ -211,6 +213,46 @@ double povray_noise(const Vec3& p, NoiseGenerator generator) {
       break;
   }
   return std::clamp(n, 0.0, 1.0);
+}
+
+int povray_hash3d(int x, int y, int z) {
+  const LatticeHash& hash = lattice_hash();
+  return hash.table[hash.pair(x & 0xFFF, y & 0xFFF) ^ (z & 0xFFF)];
+}
+
+double povray_pattern_random(size_t index) {
+  static const std::vector<double> table = [] {
+    std::mt19937 twister;  // default seed, as boost's
+    std::vector<double> t(32768);
+    for (double& v : t) v = static_cast<double>(twister()) / 4294967296.0;
+    return t;
+  }();
+  return table[index % table.size()];
+}
+
+Vec3 povray_point_in_cube(int x, int y, int z) {
+  const auto seed = static_cast<size_t>(povray_hash3d(x, y, z));
+  return {x + povray_pattern_random(seed), y + povray_pattern_random(seed + 1),
+          z + povray_pattern_random(seed + 2)};
+}
+
+math::Vec2 povray_jitter2d(double x, double y) {
+  static const std::array<double, 256> offsets = [] {
+    std::array<double, 256> t{};
+    for (unsigned i = 0; i < t.size(); ++i) {
+      unsigned bits = 0;
+      for (unsigned b = 0; b < 8; ++b)
+        if ((i >> b) & 1) bits ^= 0x8002u ^ (3u << (b + 7));
+      t[i] = bits / 65536.0 - 0.5;
+    }
+    return t;
+  }();
+  const LatticeHash& hash = lattice_hash();
+  const auto pick = [&](double a, double ka, double b, double kb) {
+    const int first = hash.table[static_cast<int>(a * ka) & 0xFFF];
+    return offsets[hash.table[(first ^ static_cast<int>(b * kb)) & 0xFFF] & 0xFF];
+  };
+  return {pick(x, 1021.0, y, 1019.0), pick(x, 1019.0, y, 1021.0)};
 }
 
 Vec3 povray_dnoise(const Vec3& p) {

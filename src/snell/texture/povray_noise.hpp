@@ -6,6 +6,7 @@
 //     cubic S-curve, shifted by 0.5 and clamped to [0, 1];
 //   2 "range corrected" (3.7's default): the same sum stretched to fill [0, 1];
 //   3 "Perlin": Perlin's 1985 gradient noise, scaled to about [0, 1].
+#include <cstddef>
 #include <memory>
 
 #include "snell/math/vec3.hpp"
@@ -29,6 +30,23 @@ class NoiseChoice {
  private:
   std::shared_ptr<const NoiseGenerator> cell_;
 };
+
+/// POV-Ray's Hash3d of a lattice cell: its noise's shuffled table applied to each coordinate's low 12 bits in
+/// turn, a number in [0, 4096).
+int povray_hash3d(int x, int y, int z);
+
+/// POV-Ray 3.7's PatternRands(i): entry i (modulo 32768) of a table of 32768 numbers in [0, 1), the first
+/// draws of a Mersenne twister (mt19937, default seed) each divided by 2^32 (randomsequences.cpp).
+double povray_pattern_random(size_t index);
+
+/// The random point POV-Ray's crackle and facets place in the unit cube of cell (x, y, z) (pattern.cpp,
+/// IntPickInCube): the cell's corner plus three table numbers drawn at its hash.
+math::Vec3 povray_point_in_cube(int x, int y, int z);
+
+/// POV-Ray's Jitter2d(x, y) (jitter.h): the offsets, each in [-0.5, 0.5], by which its anti-aliasing moves
+/// the supersample at image point (x, y) (pixel units), read through the noise's hash table from a table of
+/// 256 offsets (a binary digital sequence: entry i is the XOR of one 16-bit generator per set bit of i).
+math::Vec2 povray_jitter2d(double x, double y);
 
 /// POV-Ray's Noise(): a scalar in [0, 1].
 double povray_noise(const math::Vec3& p, NoiseGenerator generator = kDefaultNoiseGenerator);

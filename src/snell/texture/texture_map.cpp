@@ -30,12 +30,13 @@ PatternTextureSelector::PatternTextureSelector(PatternSpec pattern,
 
 material::TextureSelector::Choice PatternTextureSelector::at(const material::PatternPoint& point) const {
   const Vec3 p = pattern_.warps.apply(point.p);
-  if (pattern_.block_pattern) return {blocks_[static_cast<size_t>(pattern_.block_pattern->block(p))].get()};
+  if (pattern_.block_pattern)
+    return {blocks_[static_cast<size_t>(pattern_.block_pattern->block(p))].get(), nullptr, 0, p};
   const double v =
       pattern_.wave.apply(pattern_.value_pattern->value_at(p, point.world_normal, point.ray_direction));
   const MapBracket b = map_bracket(map_, v);
-  if (b.lower == b.upper) return {map_[b.lower].second.get()};
-  return {map_[b.lower].second.get(), map_[b.upper].second.get(), b.weight};
+  if (b.lower == b.upper) return {map_[b.lower].second.get(), nullptr, 0, p};
+  return {map_[b.lower].second.get(), map_[b.upper].second.get(), b.weight, p};
 }
 
 }  // namespace snell::texture

@@ -99,7 +99,7 @@ AovRender render_aovs(const scene::Scene& scene, const accel::Accelerator& accel
     accel::t_query_cost = &s.cost;
     s.observer.reset();
     s.context.observer = &s.observer;
-    const math::Vec2 at = sample_position(options, x, y, k, s.context.rng);
+    const math::Vec2 at = sample_position(options, x, y, k);
     seed_camera_sample(s.context.rng, at.u, at.v, options);
     const auto ray = camera->generate_ray(at.u, at.v, options.time);
     const math::Color c = ray ? integrator->trace_camera_ray(*ray, s.context) : math::Color{0, 0, 0};
@@ -133,20 +133,34 @@ AovRender render_aovs(const scene::Scene& scene, const accel::Accelerator& accel
   auto run = [&] {
     rows([&](int x, int y, ThreadState& s) { trace_sample(x, y, 0, s); });
     if (!options.antialias) return;
-    // Supersample where the first pass differs from a neighbour by more than the threshold (renderer.cpp).
-    std::vector<math::Color> encoded(pixels.size());
-    for (size_t i = 0; i < pixels.size(); ++i)
-      encoded[i] = aa_encoded(pixels[i].colour, options.aa_compare_exponent);
-    auto encoded_at = [&](int px, int py) { return encoded[static_cast<size_t>(py) * w + px]; };
-    std::vector<char> refine(pixels.size(), 0);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        refine[static_cast<size_t>(y) * w + x] =
-            differs_from_neighbour(x, y, w, h, options.aa_threshold, encoded_at);
+    // Supersample as the renderer does, tile by tile in POV-Ray's order (aa_neighbours.hpp).
+    std::vector<math::Color> first(pixels.size());
+    for (size_t i = 0; i < pixels.size(); ++i) first[i] = pixels[i].colour;
+    // A first sample of the row above or the column left of the image, seen only for comparison.
+    auto outside = [&](int x, int y, ThreadState& s) {
+      s.context.observer = nullptr;
+      const math::Vec2 at = sample_position(options, x, y, 0);
+      seed_camera_sample(s.context.rng, at.u, at.v, options);
+      const auto ray = camera->generate_ray(at.u, at.v, options.time);
+      return ray ? integrator->trace_camera_ray(*ray, s.context) : math::Color{0, 0, 0};
+    };
     const int n = options.aa_depth;
-    rows([&](int x, int y, ThreadState& s) {
-      if (!refine[static_cast<size_t>(y) * w + x]) return;
-      for (int k = 1; k <= n * n; ++k) trace_sample(x, y, k, s);
+    const std::vector<Tile> tiles = make_tiles(w, h, {0, 0, w, h});
+    tbb::parallel_for(size_t{0}, tiles.size(), [&](size_t t) {
+      ThreadState& s = states.local();
+      std::vector<math::Color> out;
+      std::vector<char> refined;
+      supersample_block(
+          tiles[t].rect, options.aa_threshold, options.aa_compare_exponent,
+          [&](int x, int y) {
+            return x < 0 || y < 0 ? outside(x, y, s) : first[static_cast<size_t>(y) * w + x];
+          },
+          [&](int x, int y, const math::Color&) {
+            for (int k = 1; k <= n * n; ++k) trace_sample(x, y, k, s);
+            const PixelRecord& p = pixels[static_cast<size_t>(y) * w + x];
+            return p.colour / std::max(1, p.samples);
+          },
+          out, refined);
     });
   };
   if (options.threads > 0) {

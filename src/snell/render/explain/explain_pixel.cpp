@@ -29,7 +29,7 @@ PixelExplanation explain_pixel(const scene::Scene& scene, const accel::Accelerat
   out.y = y;
   out.sample = sample;
   TraceContext context;
-  out.position = sample_position(options, x, y, sample, context.rng);
+  out.position = sample_position(options, x, y, sample);
   seed_camera_sample(context.rng, out.position.u, out.position.v, options);
   const auto ray = camera->generate_ray(out.position.u, out.position.v, options.time);
   if (!ray) return out;
