@@ -80,6 +80,24 @@ class DoubleSlabs {
 
  private:
   RayBox ray_;
+
+ public:
+  /// FloatSlabs::Lanes's interface: the ray with a window.
+  template <int L>
+  class Lanes {
+   public:
+    Lanes(const DoubleSlabs& slabs, double t_min, double t_max)
+        : slabs_(slabs), t_min_(t_min), t_max_(t_max) {}
+    void set_t_max(double t_max) { t_max_ = t_max; }
+    template <int W>
+    int test(const float (&lo)[3][W], const float (&hi)[3][W], double (&entry)[W]) const {
+      return slabs_.test(lo, hi, t_min_, t_max_, entry);
+    }
+
+   private:
+    const DoubleSlabs& slabs_;
+    double t_min_, t_max_;
+  };
 };
 
 }  // namespace snell::geometry

@@ -120,25 +120,29 @@ class WideBvh {
       uint32_t count;
       Real entry;
     };
-    const Real box_t_min = Slabs::round_down(t_min);
     Real box_t_max = Slabs::round_up(t_max);
+    typename Slabs::template Lanes<L> lanes(slabs, Slabs::round_down(t_min), box_t_max);
     size_t visited = 0;
     std::array<Pending, kStackSize> stack;
     stack[0] = {root_index_, root_count_, Slabs::round_down(root_entry)};
     int top = 1;
     while (top > 0) {
       const Pending p = stack[--top];
-      if (p.entry > t_max) continue;
+      // box_t_max >= t_max: a child entered beyond it is entered beyond the nearest hit.
+      if (p.entry > box_t_max) continue;
       ++visited;
       if (p.count > 0) {
         const double before = t_max;
         if (leaf(p.index, p.count, t_max)) break;
-        if (t_max != before) box_t_max = Slabs::round_up(t_max);
+        if (t_max != before) {
+          box_t_max = Slabs::round_up(t_max);
+          lanes.set_t_max(box_t_max);
+        }
         continue;
       }
       const Node& node = nodes_[p.index];
       Real entry[kWidth];
-      int mask = slabs.template test<L>(node.lo, node.hi, box_t_min, box_t_max, entry);
+      int mask = lanes.test(node.lo, node.hi, entry);
       // The children hit are sorted straight onto the stack, farthest first (insertion by decreasing
       // entry).
       Pending* hits = stack.data() + top;
