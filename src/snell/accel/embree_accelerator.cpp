@@ -139,7 +139,7 @@ struct EmbreeAccelerator::Impl {
     auto* q = reinterpret_cast<QueryContext*>(args->context);
     const auto* self = static_cast<const Impl*>(args->geometryUserPtr);
     const scene::Object* object = self->bounded[args->primID];
-    if (!test_object(*object, *q->ray, q->t_min, q->t_max, q->kind, *q->hit)) return;
+    if (!object_blocks(*object, *q->ray, q->t_min, q->t_max, q->kind)) return;
     q->found = true;
     q->occluder = object;
     RTCRayN_tfar(args->ray, 1, 0) = -std::numeric_limits<float>::infinity();
@@ -314,7 +314,7 @@ const scene::Object* EmbreeAccelerator::occluder(const Ray& ray, double t_min, d
   // Scratch for the object tests, kept per thread: clearing a fresh one was a tenth of the query's cost.
   thread_local scene::SurfaceHit hit;
   for (const scene::Object* o : s.unbounded)
-    if (test_object(*o, ray, t_min, t_max, kind, hit)) return o;
+    if (object_blocks(*o, ray, t_min, t_max, kind)) return o;
   QueryContext q;
   RTCRay r;
   bool walkable;
@@ -322,7 +322,7 @@ const scene::Object* EmbreeAccelerator::occluder(const Ray& ray, double t_min, d
     if (walkable) return nullptr;
     for (const auto* objects : {&s.bounded, &s.native})
       for (const scene::Object* o : *objects)
-        if (test_object(*o, ray, t_min, t_max, kind, hit)) return o;
+        if (object_blocks(*o, ray, t_min, t_max, kind)) return o;
     return nullptr;
   }
   rtcOccluded1(s.scene, &q.base, &r);

@@ -30,6 +30,16 @@ inline bool test_object(const scene::Object& object, const math::Ray& ray, doubl
   return object.intersect(ray, t_min, t_max, hit);
 }
 
+/// test_object for an occlusion query: whether the object stops the ray, without building its hit.
+inline bool object_blocks(const scene::Object& object, const math::Ray& ray, double t_min, double t_max,
+                          scene::RayKind kind) {
+  if (!object.visible_to(kind)) return false;
+  count_object_test(object);
+  ObjectTestCounter::count();
+  if (object.bounded_by && !object.bounded_by->clip(ray, t_min, t_max)) return false;
+  return object.blocks(ray, t_min, t_max);
+}
+
 /// Tests every object of `objects`, shrinking `t_max` to the nearest hit; true when any was hit.
 bool test_all(const std::vector<const scene::Object*>& objects, const math::Ray& ray, double t_min,
               double& t_max, scene::RayKind kind, scene::SurfaceHit& hit);

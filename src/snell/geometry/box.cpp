@@ -49,30 +49,42 @@ bool Box::span(const Ray& ray, double& t_entry, double& t_exit) const {
   return slabs(ray, t_entry, t_exit, axis0, axis1) && t_exit > t_entry;
 }
 
+LocalHit Box::face_hit(const Ray& ray, double t, int axis, double sign) const {
+  LocalHit h;
+  h.t = t;
+  h.normal[axis] = sign;
+  const Vec3 p = ray.at(t);
+  const Vec3 e = hi_ - lo_;
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  h.uv = {e[a] > 0 ? (p[a] - lo_[a]) / e[a] : 0, e[b] > 0 ? (p[b] - lo_[b]) / e[b] : 0};
+  h.part = axis;
+  return h;
+}
+
 void Box::gather(const Ray& ray, HitBuffer<2>& hits) const {
   double t0, t1;
   int axis0, axis1;
   if (!slabs(ray, t0, t1, axis0, axis1)) return;
-  const auto make = [&](double t, int axis, double sign) {
-    LocalHit h;
-    h.t = t;
-    h.normal[axis] = sign;
-    const Vec3 p = ray.at(t);
-    const Vec3 e = hi_ - lo_;
-    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    h.uv = {e[a] > 0 ? (p[a] - lo_[a]) / e[a] : 0, e[b] > 0 ? (p[b] - lo_[b]) / e[b] : 0};
-    h.part = axis;
-    return h;
-  };
   // Entering through a face whose outward normal opposes the direction, leaving through one along it.
-  if (hits.accepts(t0)) hits.add(make(t0, axis0, ray.direction[axis0] > 0 ? -1.0 : 1.0));
-  if (hits.accepts(t1) && t1 != t0) hits.add(make(t1, axis1, ray.direction[axis1] > 0 ? 1.0 : -1.0));
+  if (hits.accepts(t0)) hits.add(face_hit(ray, t0, axis0, ray.direction[axis0] > 0 ? -1.0 : 1.0));
+  if (hits.accepts(t1) && t1 != t0) hits.add(face_hit(ray, t1, axis1, ray.direction[axis1] > 0 ? 1.0 : -1.0));
 }
 
 bool Box::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
-  HitBuffer<2> hits(t_min, t_max);
-  gather(ray, hits);
-  return hits.nearest(hit);
+  // The entry precedes the exit, so the nearest kept crossing is the entry when it lies in the window:
+  // only that one is built (as gather would keep both and sort them).
+  double t0, t1;
+  int axis0, axis1;
+  if (!slabs(ray, t0, t1, axis0, axis1)) return false;
+  if (t0 > t_min && t0 < t_max) {
+    hit = face_hit(ray, t0, axis0, ray.direction[axis0] > 0 ? -1.0 : 1.0);
+    return true;
+  }
+  if (t1 > t_min && t1 < t_max && t1 != t0) {
+    hit = face_hit(ray, t1, axis1, ray.direction[axis1] > 0 ? 1.0 : -1.0);
+    return true;
+  }
+  return false;
 }
 
 void Box::all_hits(const Ray& ray, double t_min, double t_max, HitList& out) const {

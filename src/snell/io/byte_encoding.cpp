@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 namespace snell::io {
 
@@ -26,11 +27,22 @@ ByteEncoding::ByteEncoding(const Encoding& encoding) {
     }
     steps_[static_cast<size_t>(k - 1)] = std::bit_cast<float>(hi);
   }
+  steps_[255] = std::numeric_limits<float>::infinity();
+  for (std::uint32_t i = 0; i < kBuckets; ++i) start_[i] = by_search(std::bit_cast<float>(i << kBucketShift));
+}
+
+std::uint8_t ByteEncoding::by_search(float value) const {
+  if (!(value > 0)) return 0;
+  return static_cast<std::uint8_t>(std::upper_bound(steps_.begin(), steps_.end() - 1, value) -
+                                   steps_.begin());
 }
 
 std::uint8_t ByteEncoding::operator()(float value) const {
   if (!(value > 0)) return 0;  // also NaN, as Encoding::encode
-  return static_cast<std::uint8_t>(std::upper_bound(steps_.begin(), steps_.end(), value) - steps_.begin());
+  if (!(value < 1)) return 255;
+  unsigned byte = start_[std::bit_cast<std::uint32_t>(value) >> kBucketShift];
+  while (value >= steps_[byte]) ++byte;  // steps_[255] is infinite: ends by 255
+  return static_cast<std::uint8_t>(byte);
 }
 
 }  // namespace snell::io

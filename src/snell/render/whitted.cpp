@@ -660,8 +660,11 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   // more than some of the tests (nothing below traces another shadow ray while it is in use).
   thread_local scene::SurfaceHit hit;
   if (cached && *cached) {
-    if (accel::test_object(**cached, {origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit) &&
-        opaque_at(hit))
+    const math::Ray ray{origin, dir, context.time};
+    // Where every surface stops all light, a crossing is enough and its hit is not built.
+    if (opaque_shadows_
+            ? accel::object_blocks(**cached, ray, 0.0, remaining, RayKind::shadow)
+            : accel::test_object(**cached, ray, 0.0, remaining, RayKind::shadow, hit) && opaque_at(hit))
       return Color(0);
   }
   // Where nothing can let light through, any blocker will do: the walk stops at the first one found and

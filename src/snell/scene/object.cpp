@@ -59,6 +59,16 @@ bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& h
   return intersect_still(ray, t_min, t_max, hit, outer_inverse);
 }
 
+bool Object::blocks(const Ray& ray, double t_min, double t_max) const {
+  if (motion || csg) {
+    // Kept per thread: nothing below tests blocks again while it is in use.
+    thread_local SurfaceHit scratch;
+    return intersect(ray, t_min, t_max, scratch);
+  }
+  geometry::LocalHit local;
+  return shape->intersect(transform.inverse_ray(ray), t_min, t_max, local);
+}
+
 void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
                       bool outer_inverse) const {
   if (!motion) return all_hits_still(ray, t_min, t_max, hits, outer_inverse);

@@ -83,6 +83,9 @@ struct Object {
   /// inverted union becomes the intersection of its inverted children and loses its inner surfaces.
   bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit,
                  bool outer_inverse = false) const;
+  /// Whether intersect would find a hit: an occlusion test, which for a plain shape builds no world-space
+  /// hit (its normals, uv and texture point are a large part of a shadow ray's cost).
+  bool blocks(const Ray& ray, double t_min, double t_max) const;
   /// Every hit with t in (t_min, t_max), appended in increasing t (for CSG).
   void all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
                 bool outer_inverse = false) const;
