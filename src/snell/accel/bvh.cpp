@@ -91,7 +91,7 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
       }
     } else {
       for (uint32_t i = label; i < label + count; ++i)
-        if (nearest.test_general(*objects_[i])) {
+        if (done() ? nearest.test_blocking(*objects_[i]) : nearest.test_general(*objects_[i])) {
           hit = true;
           if (done()) break;
         }
@@ -123,7 +123,7 @@ const scene::Object* Bvh::occluder(const math::Ray& ray, double t_min, double t_
   scene::SurfaceHit scratch;
   NearestHit nearest(ray, t_min, t_max, kind, scratch);
   for (const scene::Object* o : unbounded_)
-    if (nearest.test_general(*o)) return o;
+    if (nearest.test_blocking(*o)) return o;
   math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {
     return walk<L>(nearest, [] { return true; });
   });

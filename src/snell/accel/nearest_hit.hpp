@@ -51,6 +51,14 @@ class NearestHit {
     found_ = true;
     return true;
   }
+  /// For an occlusion query: whether an object that is no plain triangle stops the ray (object_blocks: no
+  /// hit built); object() then names it. finish() is not for such queries.
+  bool test_blocking(const scene::Object& object) {
+    if (!object_blocks(object, ray_, t_min_, t_max_, kind_)) return false;
+    triangle_ = &object;
+    found_ = true;
+    return true;
+  }
   /// Tests a plain triangle visible to the ray's kind, counted already.
   bool test_triangle(const PlainTriangle& triangle) {
     geometry::TriangleHit crossing;
