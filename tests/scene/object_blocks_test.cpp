@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "snell/geometry/box.hpp"
+#include "snell/geometry/cone.hpp"
 #include "snell/geometry/plane.hpp"
 #include "snell/geometry/sphere.hpp"
 #include "snell/math/pcg32.hpp"
@@ -41,7 +42,9 @@ TEST(ObjectBlocksTest, AgreesWithIntersectOnRandomRaysAndWindows) {
   auto hole = plain(std::make_shared<geometry::Sphere>(Vec3(0), 1), math::Transform::translate({0.8, 0, 0}));
   hole->flags.inverse = true;
   difference->csg = std::make_shared<Csg>(CsgKind::intersection, std::vector<ObjectPtr>{box, hole});
-  const std::vector<ObjectPtr> objects{box, ball, floor, difference};
+  const auto cone = plain(std::make_shared<geometry::Cone>(Vec3(0, -1, 0), 1.0, Vec3(0, 1, 0), 0.3, false),
+                          math::Transform::translate({-0.5, 0.2, 0.3}));
+  const std::vector<ObjectPtr> objects{box, ball, floor, difference, cone};
 
   math::Pcg32 rng(3, 5);
   int blocked = 0, open = 0;

@@ -87,6 +87,13 @@ bool Box::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) c
   return false;
 }
 
+bool Box::crosses(const Ray& ray, double t_min, double t_max) const {
+  double t0, t1;
+  int axis0, axis1;
+  if (!slabs(ray, t0, t1, axis0, axis1)) return false;
+  return (t0 > t_min && t0 < t_max) || (t1 > t_min && t1 < t_max && t1 != t0);
+}
+
 void Box::all_hits(const Ray& ray, double t_min, double t_max, HitList& out) const {
   HitBuffer<2> hits(t_min, t_max);
   gather(ray, hits);

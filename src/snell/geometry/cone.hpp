@@ -19,7 +19,9 @@ class Cone final : public Shape {
   std::string_view kind() const override { return "cone"; }
 
  private:
-  void gather(const Ray& ray, HitBuffer<4>& hits) const;
+  /// Every crossing into `hits` (a HitBuffer<4>, or a NearestBuffer for intersect).
+  template <typename Buffer>
+  void gather(const Ray& ray, Buffer& hits) const;
   double radius_at(double z) const { return base_radius_ + slope_ * z; }
 
   Vec3 base_;

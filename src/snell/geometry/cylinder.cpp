@@ -37,7 +37,8 @@ Bounds3 Cylinder::bounds() const {
   return b;
 }
 
-void Cylinder::gather(const Ray& ray, HitBuffer<4>& hits) const {
+template <typename Buffer>
+void Cylinder::gather(const Ray& ray, Buffer& hits) const {
   const Vec3 rel = ray.origin - base_;
   const Vec3 o{dot(rel, u_), dot(rel, v_), dot(rel, w_)};
   const Vec3 d{dot(ray.direction, u_), dot(ray.direction, v_), dot(ray.direction, w_)};
@@ -63,7 +64,7 @@ void Cylinder::gather(const Ray& ray, HitBuffer<4>& hits) const {
 }
 
 bool Cylinder::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
-  HitBuffer<4> hits(t_min, t_max);
+  NearestBuffer hits(t_min, t_max);
   gather(ray, hits);
   return hits.nearest(hit);
 }

@@ -19,7 +19,9 @@ class Cylinder final : public Shape {
   std::string_view kind() const override { return "cylinder"; }
 
  private:
-  void gather(const Ray& ray, HitBuffer<4>& hits) const;
+  /// Every crossing into `hits` (a HitBuffer<4>, or a NearestBuffer for intersect).
+  template <typename Buffer>
+  void gather(const Ray& ray, Buffer& hits) const;
 
   Vec3 base_;
   Vec3 u_, v_, w_;  // orthonormal frame, w_ along the axis

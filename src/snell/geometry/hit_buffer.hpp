@@ -1,6 +1,7 @@
 #pragma once
 // A few candidate crossings of one ray with a convex-ish shape (box, cylinder, cone, torus), filtered to
-// (t_min, t_max) and kept sorted, so that `intersect` and `all_hits` share one code path.
+// (t_min, t_max) and kept sorted, so that `intersect` and `all_hits` share one code path; NearestBuffer is
+// the same interface for `intersect` alone.
 #include <array>
 #include <utility>
 
@@ -45,6 +46,34 @@ class HitBuffer {
   double t_min_, t_max_;
   std::array<LocalHit, N> hits_{};
   int size_ = 0;
+};
+
+/// HitBuffer's interface for a nearest-hit query: the window closes to the nearest crossing so far, so a
+/// shape's gather builds the normal and uv of a crossing only when it is nearer than all before it (and
+/// clears no array of candidates: HitBuffer<4> zeroes four hits per call).
+class NearestBuffer {
+ public:
+  NearestBuffer(double t_min, double t_max) : t_min_(t_min), t_max_(t_max) {}
+
+  bool accepts(double t) const { return t > t_min_ && t < t_max_; }
+  void add(const LocalHit& hit) {
+    if (!accepts(hit.t)) return;
+    best_ = hit;
+    t_max_ = hit.t;
+    found_ = true;
+  }
+  double t_min() const { return t_min_; }
+  double t_max() const { return t_max_; }
+
+  bool nearest(LocalHit& hit) const {
+    if (found_) hit = best_;
+    return found_;
+  }
+
+ private:
+  double t_min_, t_max_;
+  LocalHit best_;
+  bool found_ = false;
 };
 
 }  // namespace snell::geometry

@@ -39,6 +39,13 @@ bool Plane::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit)
   return true;
 }
 
+bool Plane::crosses(const Ray& ray, double t_min, double t_max) const {
+  const double denom = dot(normal_, ray.direction);
+  if (denom == 0 || !std::isfinite(denom)) return false;
+  const double t = (distance_ - dot(normal_, ray.origin)) / denom;
+  return t > t_min && t < t_max;
+}
+
 void Plane::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
   LocalHit hit;
   if (intersect(ray, t_min, t_max, hit)) hits.push_back(hit);

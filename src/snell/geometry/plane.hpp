@@ -13,6 +13,7 @@ class Plane final : public Shape {
   /// bounds such planes in a CSG intersection (quadric.cpp, Compute_Plane_Min_Max); else everything.
   Bounds3 bounds() const override { return bounds_; }
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  bool crosses(const Ray& ray, double t_min, double t_max) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override { return dot(normal_, p) < distance_; }
   std::string_view kind() const override { return "plane"; }

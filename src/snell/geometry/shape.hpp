@@ -44,6 +44,12 @@ class Shape {
   virtual Bounds3 inside_bounds_within(const Bounds3& box) const { return bounds().intersection(box); }
   /// Nearest crossing with t in (t_min, t_max). Returns false when there is none.
   virtual bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const = 0;
+  /// Whether intersect would find a crossing (shadow rays): shapes whose hits cost more than their test
+  /// (a sphere's uv is an atan2 and an acos) answer without building one.
+  virtual bool crosses(const Ray& ray, double t_min, double t_max) const {
+    LocalHit hit;
+    return intersect(ray, t_min, t_max, hit);
+  }
   /// Appends every crossing with t in (t_min, t_max), in increasing t (for CSG and filtered shadows).
   virtual void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const = 0;
   /// The parameters where the ray first crosses the shape and next crosses it again, over all t: for a

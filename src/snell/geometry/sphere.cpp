@@ -58,6 +58,13 @@ bool Sphere::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit
   return true;
 }
 
+bool Sphere::crosses(const Ray& ray, double t_min, double t_max) const {
+  double t0, t1;
+  if (!roots(ray, t0, t1)) return false;
+  const double t = t0 > t_min ? t0 : t1;
+  return t > t_min && t < t_max;
+}
+
 void Sphere::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
   double t0, t1;
   if (!roots(ray, t0, t1)) return;

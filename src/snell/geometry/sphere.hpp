@@ -10,6 +10,7 @@ class Sphere final : public Shape {
 
   Bounds3 bounds() const override;
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  bool crosses(const Ray& ray, double t_min, double t_max) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool span(const Ray& ray, double& t_entry, double& t_exit) const override;
   bool inside(const Vec3& p) const override;

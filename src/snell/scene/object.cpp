@@ -65,8 +65,7 @@ bool Object::blocks(const Ray& ray, double t_min, double t_max) const {
     thread_local SurfaceHit scratch;
     return intersect(ray, t_min, t_max, scratch);
   }
-  geometry::LocalHit local;
-  return shape->intersect(transform.inverse_ray(ray), t_min, t_max, local);
+  return shape->crosses(transform.inverse_ray(ray), t_min, t_max);
 }
 
 void Object::all_hits(const Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
