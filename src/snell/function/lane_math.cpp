@@ -8,6 +8,8 @@
 #include <immintrin.h>
 #endif
 
+#include "snell/math/cpu.hpp"
+
 // The kernels are written once over GCC/Clang vector extensions of W doubles and built twice: W = 2 for
 // any x86-64 (SSE2), W = 4 in functions compiled for AVX2, chosen once at run time. Only operations that
 // both instruction sets have natively are used (double compares, 64-bit adds, shifts and logic; no 64-bit
@@ -229,8 +231,7 @@ struct Kernels {
 
 bool has_avx2() {
 #if defined(SNELL_LANE_AVX2)
-  __builtin_cpu_init();  // this may run as a static initialiser, before libgcc's own
-  return __builtin_cpu_supports("avx2");
+  return math::has_avx2();
 #else
   return false;
 #endif
