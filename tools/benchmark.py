@@ -75,6 +75,40 @@ def throughput(bench, runs):
     return {key: statistics.median(values) for key, values in samples.items()}
 
 
+TRIANGLE_ROWS = [("raw_embree", "Embree alone (float)"), ("embree", "embree"), ("bvh", "bvh"),
+                 ("octree", "octree"), ("grid", "grid"), ("embree_mesh", "embree, one mesh"),
+                 ("bvh_mesh", "bvh, one mesh (its own tree)")]
+TRIANGLE_SETS = ["primary", "random", "shadow"]
+
+
+def triangle_throughput(bench, runs):
+    """Median rays/s per (row, ray set) from snell_bench's 100k-triangle soup (bench/triangle_bench.cpp)."""
+    if not Path(bench).is_file():
+        return None
+    out = subprocess.run([bench, "--benchmark_filter=^triangles/", f"--benchmark_repetitions={runs}",
+                          "--benchmark_format=json"], capture_output=True, text=True, check=True)
+    samples = {}
+    for b in json.loads(out.stdout)["benchmarks"]:
+        if b.get("run_type") != "iteration":
+            continue
+        row, rays = b["name"].split("/")[1].rsplit("_", 1)  # "triangles/bvh_mesh_random"
+        samples.setdefault((row, rays), []).append(b["rays/s"])
+    return {key: statistics.median(values) for key, values in samples.items()}
+
+
+def triangle_table(rates):
+    """The triangle throughput table, each set also as a fraction of Embree called directly."""
+    lines = ["| structure | " + " | ".join(f"{s} rays/s | vs Embree" for s in TRIANGLE_SETS) + " |",
+             "|---|" + "---:|---:|" * len(TRIANGLE_SETS)]
+    for row, label in TRIANGLE_ROWS:
+        cells = []
+        for s in TRIANGLE_SETS:
+            r, base = rates.get((row, s)), rates.get(("raw_embree", s))
+            cells += ["–", "–"] if r is None or not base else [f"{r / 1e6:.3f} M", f"{r / base:.2f}x"]
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def render_pair(name, scene_dir, scene_file, size, runs, snell, work):
     """Median wall time and peak memory of snell and povray on one scene, and the SSIM of their images."""
     w, h = size
@@ -160,6 +194,16 @@ def main():
                              f"{r / 1e6:.2f} M | {r / rates[('embree', 'random')]:.2f}x |")
             lines.append("")
             print("\n".join(lines[-7:]), flush=True)
+        triangles = triangle_throughput(args.bench, args.runs)
+        if triangles:
+            table = triangle_table(triangles)
+            lines += ["## Ray throughput (100,000 triangles, 1 thread)", "",
+                      "A soup of small overlapping triangles (`bench/triangle_bench.cpp`): Embree called directly "
+                      "on float triangles (rtcIntersect1 / rtcOccluded1) against each accelerator, which sees "
+                      "them as scene objects and reports double-precision hits, and against one `mesh` "
+                      "object; shadow rays are occlusion queries. \"vs Embree\" is the fraction of Embree "
+                      "alone.", ""] + table + [""]
+            print("\n".join(table), flush=True)
 
         results = []
         for name, scene in scenes:

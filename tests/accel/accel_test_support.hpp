@@ -77,4 +77,32 @@ inline void expect_same_hit(const accel::Accelerator& a, const accel::Accelerato
 inline constexpr RayKind kKinds[] = {RayKind::camera, RayKind::reflection, RayKind::refraction,
                                      RayKind::shadow};
 
+/// expect_same_hit for `rays` random rays from [-reach, reach]^3 (directions deliberately not unit length)
+/// and each ray kind in turn, over [1e-6, inf) or, with `windows`, also random windows; returns how many
+/// hit something.
+inline int compare_random_rays(const accel::Accelerator& tested, const accel::Accelerator& brute,
+                               math::Pcg32& rng, int rays, double reach, bool windows = false) {
+  int hits = 0;
+  for (int i = 0; i < rays; ++i) {
+    const math::Ray ray{uniform_vec(rng, -reach, reach), uniform_vec(rng, -1, 1) * uniform(rng, 0.3, 3), 0};
+    const RayKind kind = kKinds[i % 4];
+    const double t_min = !windows || i % 3 ? 1e-6 : uniform(rng, 0, 10);
+    const double t_max = !windows || i % 5 ? math::kInfinity : t_min + uniform(rng, 0, 10);
+    expect_same_hit(tested, brute, ray, t_min, t_max, kind);
+    scene::SurfaceHit h;
+    hits += brute.intersect(ray, t_min, t_max, kind, h);
+  }
+  return hits;
+}
+
+/// Whether a.occluder agrees with brute force's nearest hit over (1e-6, t_max) and names an object the ray
+/// really hits.
+inline bool occluder_agrees(const accel::Accelerator& a, const accel::Accelerator& brute,
+                            const math::Ray& ray, double t_max, RayKind kind, bool& blocked) {
+  scene::SurfaceHit nearest, own;
+  blocked = brute.intersect(ray, 1e-6, t_max, kind, nearest);
+  const scene::Object* o = a.occluder(ray, 1e-6, t_max, kind);
+  return blocked == (o != nullptr) && (!o || (o->visible_to(kind) && o->intersect(ray, 1e-6, t_max, own)));
+}
+
 }  // namespace snell::accel_test

@@ -146,13 +146,8 @@ TEST(AcceleratorTest, OccluderAgreesWithBruteForce) {
     for (int i = 0; i < 4000; ++i) {
       const math::Ray ray{uniform_vec(rng, -12, 12), uniform_vec(rng, -1, 1), 0};
       const double t_max = i % 2 ? math::kInfinity : uniform(rng, 0.5, 20);
-      const RayKind ray_kind = kKinds[i % 4];
-      scene::SurfaceHit nearest;
-      const bool hit = brute->intersect(ray, 1e-6, t_max, ray_kind, nearest);
-      const scene::Object* o = a->occluder(ray, 1e-6, t_max, ray_kind);
-      scene::SurfaceHit own;
-      if (hit != (o != nullptr) || (o && !(o->visible_to(ray_kind) && o->intersect(ray, 1e-6, t_max, own))))
-        ++mismatches;
+      bool hit;
+      mismatches += !occluder_agrees(*a, *brute, ray, t_max, kKinds[i % 4], hit);
       blocked += hit;
     }
     EXPECT_EQ(mismatches, 0) << kind;

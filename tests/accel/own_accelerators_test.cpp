@@ -40,15 +40,8 @@ TEST_P(OwnAcceleratorTest, NearestHitMatchesBruteForce) {
     const auto tested = accel::make_accelerator(GetParam(), s);
     const auto brute = accel::make_accelerator("none", s);
     math::Pcg32 rng(seed * 31);
-    int hits = 0;
-    for (int i = 0; i < 4000; ++i) {
-      // Origins inside and outside the objects' region; directions deliberately not unit length.
-      const math::Ray ray{uniform_vec(rng, -25, 25), uniform_vec(rng, -1, 1) * uniform(rng, 0.3, 3), 0};
-      const RayKind kind = kKinds[i % 4];
-      expect_same_hit(*tested, *brute, ray, 1e-6, math::kInfinity, kind);
-      scene::SurfaceHit h;
-      hits += brute->intersect(ray, 1e-6, math::kInfinity, kind, h);
-    }
+    // Origins inside and outside the objects' region.
+    const int hits = compare_random_rays(*tested, *brute, rng, 4000, 25);
     EXPECT_GT(hits, 2000) << "scene too sparse to test anything";
   }
 }

@@ -7,6 +7,7 @@
 #include "shape_checks.hpp"
 #include "snell/geometry/box.hpp"
 #include "snell/geometry/triangle_kernel.hpp"
+#include "snell/math/pcg32.hpp"
 
 using namespace snell::geometry;
 using snell::geometry::shape_checks::expect_near;
@@ -128,6 +129,48 @@ TEST(MeshTest, LargeMeshAgreesWithBruteForce) {
   EXPECT_LT(secs, 5.0);
   std::printf("100k-triangle mesh: build+check %.2fs, 100k rays %.3fs\n",
               std::chrono::duration<double>(t0 - start).count(), secs);
+}
+
+TEST(MeshTest, RayThroughASharedEdgeReportsTheLowestNumberedFace) {
+  // A flat 20 x 20 grid of squares cut into triangles, faces numbered in shuffled order; rays straight down
+  // through edge midpoints and grid vertices meet two or more faces at t = 1 exactly. The face reported
+  // must be brute force's lowest-numbered among those, whatever order the tree tests them in.
+  constexpr int kN = 20;
+  MeshData data;
+  for (int j = 0; j <= kN; ++j)
+    for (int i = 0; i <= kN; ++i) data.vertices.push_back({double(i), double(j), 0});
+  for (int j = 0; j < kN; ++j)
+    for (int i = 0; i < kN; ++i) {
+      const int a = j * (kN + 1) + i, b = a + 1, c = a + kN + 1, d = c + 1;
+      data.faces.push_back({a, b, d});
+      data.faces.push_back({a, d, c});
+    }
+  snell::math::Pcg32 rng(11);
+  for (size_t f = data.faces.size() - 1; f > 0; --f)
+    std::swap(data.faces[f], data.faces[rng.next_uint() % (f + 1)]);
+  const Mesh mesh(data);
+  int ties = 0;
+  for (int k = 0; k < 300; ++k) {
+    const double x = 1 + rng.next_uint() % (2 * kN - 2) * 0.5, y = 1 + rng.next_uint() % (2 * kN - 2) * 0.5;
+    const Ray ray{{x, y, 1}, {0, 0, -1}, 0};
+    int lowest = -1, crossings = 0;
+    for (int f = 0; f < static_cast<int>(data.faces.size()); ++f) {
+      const auto& v = data.faces[f];
+      TriangleHit th;
+      if (!intersect_triangle(data.vertices[v[0]], data.vertices[v[1]], data.vertices[v[2]], ray, 1e-9,
+                              kInfinity, th))
+        continue;
+      ASSERT_EQ(th.t, 1.0);
+      ++crossings;
+      if (lowest < 0) lowest = f;
+    }
+    ASSERT_GE(lowest, 0);
+    ties += crossings > 1;
+    LocalHit hit;
+    ASSERT_TRUE(mesh.intersect(ray, 1e-9, kInfinity, hit));
+    EXPECT_EQ(hit.part, lowest) << x << " " << y;
+  }
+  EXPECT_GT(ties, 200);
 }
 
 TEST(MeshTest, BadIndicesThrow) {

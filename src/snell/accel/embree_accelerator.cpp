@@ -4,7 +4,7 @@
 
 #include "snell/accel/embree_meshes.hpp"
 #include "snell/accel/indexed_objects.hpp"
-#include "snell/accel/ray_box.hpp"
+#include "snell/geometry/ray_box.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -41,8 +41,8 @@ using math::Ray;
 using math::Vec3;
 
 // Float boxes always contain the double ones: corners rounded outward (ray_box.hpp).
-constexpr auto round_down = float_below;
-constexpr auto round_up = float_above;
+constexpr auto round_down = geometry::float_below;
+constexpr auto round_up = geometry::float_above;
 
 /// Per-query data for the callbacks: a struct beginning with RTCIntersectContext, passed to rtcIntersect1
 /// and cast back in the callback; the Embree 3 manual (rtcInitIntersectContext) documents this extension.

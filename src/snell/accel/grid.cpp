@@ -6,7 +6,8 @@
 
 #include "snell/accel/indexed_objects.hpp"
 #include "snell/accel/mailbox.hpp"
-#include "snell/accel/ray_box.hpp"
+#include "snell/accel/nearest_hit.hpp"
+#include "snell/geometry/ray_box.hpp"
 
 namespace snell::accel {
 
@@ -22,6 +23,7 @@ Grid::Grid(const scene::Scene& scene) {
   const IndexedObjects indexed(scene);
   everywhere_ = indexed.unbounded;
   objects_ = indexed.bounded;
+  triangles_ = plain_triangles(objects_);
   box_ = indexed.scene_box;
   const size_t n = objects_.size();
   if (n > 0) {
@@ -72,19 +74,21 @@ Grid::Grid(const scene::Scene& scene) {
     for (size_t i = 0; i < n; ++i)
       if (listed[i]) for_each_cell(i, [&](size_t c) { cell_objects_[fill[c]++] = static_cast<uint32_t>(i); });
   }
-  stats_ = structure_stats(
-      scene.objects.size(), indexed.unbounded.size(), cell_start_.empty() ? 0 : cell_start_.size() - 1,
-      (cell_start_.size() + cell_objects_.size()) * sizeof(uint32_t) + objects_.size() * sizeof(objects_[0]),
-      start);
+  stats_ = structure_stats(scene.objects.size(), indexed.unbounded.size(),
+                           cell_start_.empty() ? 0 : cell_start_.size() - 1,
+                           (cell_start_.size() + cell_objects_.size()) * sizeof(uint32_t) +
+                               objects_.size() * (sizeof(objects_[0]) + sizeof(PlainTriangle)),
+                           start);
 }
 
 bool Grid::intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
                      scene::SurfaceHit& hit) const {
-  bool found = test_all(everywhere_, ray, t_min, t_max, kind, hit);
-  if (cell_start_.empty() || !(t_min < t_max)) return found;
-  const RayBox slabs(ray);
+  NearestHit nearest(ray, t_min, t_max, kind, hit);
+  for (const scene::Object* o : everywhere_) nearest.test_general(*o);
+  if (cell_start_.empty() || !(t_min < t_max)) return nearest.finish();
+  const geometry::RayBox slabs(ray);
   double entry, exit;
-  if (!slabs.enter(box_, t_min, t_max, entry, exit)) return found;
+  if (!slabs.enter(box_, t_min, nearest.t_max(), entry, exit)) return nearest.finish();
 
   // Start cell: the entry point nudged a millionth of a cell back along the ray, so rounding can only
   // start the walk one cell early (harmless), never one cell late.
@@ -116,21 +120,18 @@ bool Grid::intersect(const math::Ray& ray, double t_min, double t_max, scene::Ra
     tally.visit();
     for (uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
       const uint32_t i = cell_objects_[k];
-      if (mailbox.first_visit(i) && test_object(*objects_[i], ray, t_min, t_max, kind, hit)) {
-        t_max = hit.t;
-        found = true;
-      }
+      if (mailbox.first_visit(i)) nearest.test(*objects_[i], triangles_[i]);
     }
     // Every object not yet tested lies in cells beyond this one, so a hit (or window end) before the
     // cell's exit is final.
     const int axis = next.x < next.y ? (next.x < next.z ? 0 : 2) : (next.y < next.z ? 1 : 2);
     const double cell_exit = next[axis];
-    if (!(cell_exit < t_max) || step[axis] == 0) break;
+    if (!(cell_exit < nearest.t_max()) || step[axis] == 0) break;
     cell[axis] += step[axis];
     if (cell[axis] < 0 || cell[axis] >= resolution_[axis]) break;
     next[axis] = plane_t(axis);
   }
-  return found;
+  return nearest.finish();
 }
 
 }  // namespace snell::accel

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/nearest_hit.hpp"
 
 namespace snell::accel {
 
@@ -30,6 +31,8 @@ class Grid final : public Accelerator {
   std::vector<uint32_t> cell_start_;
   std::vector<uint32_t> cell_objects_;
   std::vector<const scene::Object*> objects_;
+  /// plain_triangle of each of objects_.
+  std::vector<PlainTriangle> triangles_;
   /// Objects too large to list cell by cell (they would cover a quarter of the grid), and unbounded ones.
   std::vector<const scene::Object*> everywhere_;
   AcceleratorStats stats_;

@@ -1,21 +1,8 @@
 #include "snell/accel/indexed_objects.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include "snell/geometry/ray_box.hpp"
 
 namespace snell::accel {
-
-namespace {
-
-/// Bounds are computed in double from exact shape boxes; 2^-40 of the box's magnitude (thousands of
-/// ulps) absorbs their rounding without making boxes measurably larger.
-math::Bounds3 padded(const math::Bounds3& b) {
-  const double magnitude = std::max(max_component(math::abs(b.lo)), max_component(math::abs(b.hi)));
-  const double pad = magnitude * 0x1p-40 + 1e-300;
-  return {b.lo - math::Vec3(pad), b.hi + math::Vec3(pad)};
-}
-
-}  // namespace
 
 math::Bounds3 culling_bounds(const scene::Object& object) {
   const math::Bounds3 world = object.world_bounds();
@@ -50,7 +37,7 @@ IndexedObjects::IndexedObjects(const scene::Scene& scene) {
     const math::Bounds3 b = culling_bounds(*o);
     if (b.is_finite() && !b.empty()) {
       bounded.push_back(o.get());
-      boxes.push_back(padded(b));
+      boxes.push_back(geometry::padded(b));
       scene_box.unite(boxes.back());
     } else if (!b.is_finite()) {
       unbounded.push_back(o.get());

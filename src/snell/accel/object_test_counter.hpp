@@ -19,8 +19,8 @@ struct alignas(64) ObjectTestSlot {
 struct ObjectTestCounter {
   static inline std::atomic<bool> enabled{false};
 
-  static void count() {
-    if (enabled.load(std::memory_order_relaxed)) slot().fetch_add(1, std::memory_order_relaxed);
+  static void count(uint64_t tests = 1) {
+    if (enabled.load(std::memory_order_relaxed)) slot().fetch_add(tests, std::memory_order_relaxed);
   }
   /// Tests counted since the last reset, over all threads.
   static uint64_t total() {

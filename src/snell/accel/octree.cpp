@@ -6,7 +6,8 @@
 
 #include "snell/accel/indexed_objects.hpp"
 #include "snell/accel/mailbox.hpp"
-#include "snell/accel/ray_box.hpp"
+#include "snell/accel/nearest_hit.hpp"
+#include "snell/geometry/ray_box.hpp"
 
 namespace snell::accel {
 
@@ -19,6 +20,9 @@ constexpr int kStackSize = 7 * kMaxDepth + 8;
 // Listing large objects in many children can grow the tree without bound; past this many entries per
 // object every further node becomes a leaf.
 constexpr size_t kEntriesPerObject = 16;
+// The cost of walking one node (its box test and the push of its children), in object tests, for the
+// decision to split.
+constexpr double kNodeCost = 1.0;
 
 /// The axes a node is halved along: those at least half as long as its longest side. Halving a thin side
 /// (a flat layer of objects) would cut every object in two and list it in both halves without separating
@@ -74,27 +78,42 @@ class OctreeBuilder {
  private:
   void build_node(size_t index, const std::vector<uint32_t>& objects, int depth) {
     const math::Bounds3 box = tree_.nodes_[index].box;
-    if (objects.size() <= kMaxLeafObjects || depth >= kMaxDepth || tree_.entries_.size() > budget_) {
+    const uint8_t axes = split_axes(box);
+    const int children = child_count(axes);
+    std::array<std::vector<uint32_t>, 8> inside;
+    bool split = objects.size() > kMaxLeafObjects && depth < kMaxDepth && tree_.entries_.size() <= budget_;
+    if (split) {
+      // Split only where it pays by the surface area heuristic: a ray that enters the node enters a child
+      // with the odds of their areas, and objects larger than a child are listed in several. Past that
+      // point (a soup of triangles larger than the cells) splitting multiplies the entries and never
+      // separates the objects, and a depth-first build used to spend the whole entry budget there,
+      // leaving the rest of the tree as leaves of thousands.
+      double expected_tests = kNodeCost;
+      for (int c = 0; c < children; ++c) {
+        const math::Bounds3 child_box = octant(box, axes, static_cast<uint32_t>(c));
+        for (uint32_t o : objects)
+          if (overlaps(in_.boxes[o], child_box)) inside[c].push_back(o);
+        expected_tests +=
+            child_box.surface_area() / box.surface_area() * static_cast<double>(inside[c].size());
+      }
+      split = expected_tests < static_cast<double>(objects.size());
+    }
+    if (!split) {
       Octree::Node& node = tree_.nodes_[index];
       node.first = static_cast<uint32_t>(tree_.entries_.size());
       node.count = static_cast<uint32_t>(objects.size());
       tree_.entries_.insert(tree_.entries_.end(), objects.begin(), objects.end());
       return;
     }
-    const uint8_t axes = split_axes(box);
     const auto first = static_cast<uint32_t>(tree_.nodes_.size());
     tree_.nodes_[index].first = first;
     tree_.nodes_[index].leaf = false;
     tree_.nodes_[index].axes = axes;
-    const int children = child_count(axes);
     for (int c = 0; c < children; ++c)
       tree_.nodes_.push_back({octant(box, axes, static_cast<uint32_t>(c)), 0, 0, true, 0});
     for (int c = 0; c < children; ++c) {
-      const math::Bounds3 child_box = tree_.nodes_[first + c].box;
-      std::vector<uint32_t> inside;
-      for (uint32_t o : objects)
-        if (overlaps(in_.boxes[o], child_box)) inside.push_back(o);
-      build_node(first + c, inside, depth + 1);
+      const std::vector<uint32_t> mine = std::move(inside[c]);
+      build_node(first + c, mine, depth + 1);
     }
   }
 
@@ -107,19 +126,21 @@ Octree::Octree(const scene::Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   const IndexedObjects indexed(scene);
   objects_ = indexed.bounded;
+  triangles_ = plain_triangles(objects_);
   unbounded_ = indexed.unbounded;
   OctreeBuilder(indexed, *this).build();
   stats_ = structure_stats(scene.objects.size(), unbounded_.size(), nodes_.size(),
                            nodes_.size() * sizeof(Node) + entries_.size() * sizeof(uint32_t) +
-                               objects_.size() * sizeof(objects_[0]),
+                               objects_.size() * (sizeof(objects_[0]) + sizeof(PlainTriangle)),
                            start);
 }
 
 bool Octree::intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
                        scene::SurfaceHit& hit) const {
-  bool found = test_all(unbounded_, ray, t_min, t_max, kind, hit);
-  if (nodes_.empty() || !(t_min < t_max)) return found;
-  const RayBox slabs(ray);
+  NearestHit nearest(ray, t_min, t_max, kind, hit);
+  for (const scene::Object* o : unbounded_) nearest.test_general(*o);
+  if (nodes_.empty() || !(t_min < t_max)) return nearest.finish();
+  const geometry::RayBox slabs(ray);
   // Numbering children by (number XOR near) gives an order in which a ray never goes back: it can only
   // cross from the near to the far half on each axis. `near` depends on which axes a node splits.
   std::array<uint32_t, 8> near_for_axes;
@@ -140,7 +161,7 @@ bool Octree::intersect(const math::Ray& ray, double t_min, double t_max, scene::
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (!slabs.hits(node.box, t_min, t_max)) continue;
+    if (!slabs.hits(node.box, t_min, nearest.t_max())) continue;
     tally.visit();  // nodes the ray enters, as the BVH counts them
     if (!node.leaf) {
       const uint32_t near = near_for_axes[node.axes];
@@ -150,13 +171,10 @@ bool Octree::intersect(const math::Ray& ray, double t_min, double t_max, scene::
     }
     for (uint32_t k = node.first; k < node.first + node.count; ++k) {
       const uint32_t i = entries_[k];
-      if (mailbox.first_visit(i) && test_object(*objects_[i], ray, t_min, t_max, kind, hit)) {
-        t_max = hit.t;
-        found = true;
-      }
+      if (mailbox.first_visit(i)) nearest.test(*objects_[i], triangles_[i]);
     }
   }
-  return found;
+  return nearest.finish();
 }
 
 }  // namespace snell::accel

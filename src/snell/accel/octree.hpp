@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/nearest_hit.hpp"
 
 namespace snell::accel {
 
@@ -34,6 +35,8 @@ class Octree final : public Accelerator {
   /// Leaf lists: indices into objects_.
   std::vector<uint32_t> entries_;
   std::vector<const scene::Object*> objects_;
+  /// plain_triangle of each of objects_.
+  std::vector<PlainTriangle> triangles_;
   std::vector<const scene::Object*> unbounded_;
   AcceleratorStats stats_;
 };

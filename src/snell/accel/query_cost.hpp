@@ -37,6 +37,7 @@ class NodeTally {
   NodeTally(const NodeTally&) = delete;
   NodeTally& operator=(const NodeTally&) = delete;
   void visit() { ++count_; }
+  void add(uint64_t nodes) { count_ += nodes; }
 
  private:
   uint64_t count_ = 0;

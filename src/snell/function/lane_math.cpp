@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "snell/math/cpu.hpp"
 #include "snell/math/simd.hpp"
 
 #if defined(__x86_64__)
@@ -181,8 +182,7 @@ struct Kernels {
 
 bool has_avx2() {
 #if defined(SNELL_LANE_AVX2)
-  __builtin_cpu_init();  // this may run as a static initialiser, before libgcc's own
-  return __builtin_cpu_supports("avx2");
+  return math::has_avx2();
 #else
   return false;
 #endif

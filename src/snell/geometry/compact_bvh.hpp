@@ -2,8 +2,8 @@
 // A small-footprint bounding volume hierarchy for shapes made of very many primitives (an L-system's
 // branches): float boxes (32-byte nodes), up to 4 primitives per leaf and a median split on the longest
 // axis of the centroids, which builds in O(n log n) with no extra memory per primitive. The caller reorders
-// its primitives by `order()` so leaves refer to contiguous ranges and no index array is kept. (MeshBvh's
-// SAH tree traces faster but costs about 130 bytes per primitive.)
+// its primitives by `order()` so leaves refer to contiguous ranges and no index array is kept. (The mesh's
+// SAH tree, triangle_tree.hpp, traces faster but needs several times the memory per primitive.)
 #include <cstdint>
 #include <span>
 #include <vector>

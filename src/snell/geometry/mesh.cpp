@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "snell/geometry/mesh_bvh.hpp"
 #include "snell/geometry/triangle_kernel.hpp"
+#include "snell/geometry/triangle_tree.hpp"
 
 namespace snell::geometry {
 namespace {
@@ -50,16 +50,10 @@ Bounds3 Mesh::bounds() const {
   return bounds_;
 }
 
-const MeshBvh& Mesh::bvh() const {
-  std::call_once(bvh_built_, [this] {
-    std::vector<Bounds3> boxes(data_.faces.size());
-    for (size_t f = 0; f < data_.faces.size(); ++f) {
-      const auto& face = data_.faces[f];
-      boxes[f] = Bounds3(data_.vertices[face[0]], data_.vertices[face[1]]).unite(data_.vertices[face[2]]);
-    }
-    bvh_ = std::make_unique<MeshBvh>(boxes);
-  });
-  return *bvh_;
+const TriangleTree& Mesh::tree() const {
+  std::call_once(tree_built_,
+                 [this] { tree_ = std::make_unique<TriangleTree>(data_.vertices, data_.faces); });
+  return *tree_;
 }
 
 // Moeller and Trumbore 1997 without the edge tests: t and the barycentrics of the ray's crossing with the
@@ -120,19 +114,27 @@ LocalHit Mesh::make_hit(int face, double t, double b1, double b2) const {
   return hit;
 }
 
+bool Mesh::crossing(int face, const Ray& ray, double t_min, double t_max, TriangleHit& hit) const {
+  const auto& f = data_.faces[face];
+  return intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, t_min,
+                            t_max, hit);
+}
+
 bool Mesh::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
   int best = -1;
   TriangleHit best_hit{};
-  double t_far = t_max;
-  bvh().traverse(ray, t_min, t_far, [&](int face, double& t_limit) {
-    const auto& f = data_.faces[face];
-    TriangleHit th;
-    if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, t_min,
-                           t_limit, th)) {
+  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {
+    tree().walk<L>(ray, t_min, t_max, [&](uint32_t id, double& t_limit) {
+      const int face = static_cast<int>(id);
+      // A lower-numbered face hit at the same t as the best so far replaces it: the answer does not
+      // depend on the order of the walk.
+      const double limit = best >= 0 && face < best ? std::nextafter(t_limit, math::kInfinity) : t_limit;
+      TriangleHit th;
+      if (!crossing(face, ray, t_min, limit, th)) return;
       t_limit = th.t;
       best = face;
       best_hit = th;
-    }
+    });
   });
   if (best < 0) return false;
   hit = make_hit(best, best_hit.t, best_hit.b1, best_hit.b2);
@@ -141,16 +143,16 @@ bool Mesh::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) 
 
 void Mesh::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
   const size_t first = hits.size();
-  double t_far = t_max;
-  bvh().traverse(ray, t_min, t_far, [&](int face, double&) {
-    const auto& f = data_.faces[face];
-    TriangleHit th;
-    if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, t_min,
-                           t_max, th))
-      hits.push_back(make_hit(face, th.t, th.b1, th.b2));
+  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {
+    tree().walk<L>(ray, t_min, t_max, [&](uint32_t face, double&) {
+      TriangleHit th;
+      if (crossing(static_cast<int>(face), ray, t_min, t_max, th))
+        hits.push_back(make_hit(static_cast<int>(face), th.t, th.b1, th.b2));
+    });
   });
-  std::sort(hits.begin() + static_cast<std::ptrdiff_t>(first), hits.end(),
-            [](const LocalHit& a, const LocalHit& b) { return a.t < b.t; });
+  std::sort(
+      hits.begin() + static_cast<std::ptrdiff_t>(first), hits.end(),
+      [](const LocalHit& a, const LocalHit& b) { return a.t < b.t || (a.t == b.t && a.part < b.part); });
 }
 
 // POV-Ray (mesh.cpp, Mesh::Inside): with inside_vector, a point is inside when a ray from it along that
@@ -159,13 +161,11 @@ bool Mesh::inside(const Vec3& p) const {
   if (!data_.inside_vector) return false;
   const Ray ray{p, *data_.inside_vector, 0};
   int crossings = 0;
-  double t_far = math::kInfinity;
-  bvh().traverse(ray, 0.0, t_far, [&](int face, double&) {
-    const auto& f = data_.faces[face];
-    TriangleHit th;
-    if (intersect_triangle(data_.vertices[f[0]], data_.vertices[f[1]], data_.vertices[f[2]], ray, 0.0,
-                           math::kInfinity, th))
-      ++crossings;
+  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {
+    tree().walk<L>(ray, 0.0, math::kInfinity, [&](uint32_t face, double&) {
+      TriangleHit th;
+      if (crossing(static_cast<int>(face), ray, 0.0, math::kInfinity, th)) ++crossings;
+    });
   });
   return crossings % 2 == 1;
 }

@@ -6,10 +6,11 @@
 #include <vector>
 
 #include "snell/geometry/shape.hpp"
+#include "snell/geometry/triangle_kernel.hpp"
 
 namespace snell::geometry {
 
-class MeshBvh;
+class TriangleTree;
 
 /// Triangle soup with optional per-vertex normals and uvs, shared by POV-Ray `mesh`, `mesh2` and imported
 /// meshes. Index triples refer into the vectors; `normal_indices`/`uv_indices` are empty or parallel to
@@ -26,10 +27,12 @@ struct MeshData {
   std::optional<Vec3> inside_vector;
 };
 
-/// POV-Ray `mesh`/`mesh2`: triangles under an internal BVH (mesh_bvh.hpp). Hits report the face index in
-/// `LocalHit::part`. Without `inside_vector` a mesh has no interior (POV-Ray: Inside is false).
-/// The BVH is built on the first query: a mesh the Embree back end walks as native triangles (and only
-/// refines with `face_hit`) never needs it, which saves its memory.
+/// POV-Ray `mesh`/`mesh2`: triangles under an internal BVH (triangle_tree.hpp: eight-wide, triangles packed
+/// for SIMD tests in float, each hit found in double). Hits report the face index in `LocalHit::part`;
+/// of faces hit at the very same t (a ray through a shared edge), the lowest-numbered. Without
+/// `inside_vector` a mesh has no interior (POV-Ray: Inside is false). The BVH is built on the first query: a
+/// mesh the Embree back end walks as native triangles (and only refines with `face_hit`) never needs it,
+/// which saves its memory.
 class Mesh final : public Shape {
  public:
   explicit Mesh(MeshData data);
@@ -49,14 +52,15 @@ class Mesh final : public Shape {
 
  private:
   LocalHit make_hit(int face, double t, double b1, double b2) const;
+  bool crossing(int face, const Ray& ray, double t_min, double t_max, TriangleHit& hit) const;
   const std::array<int, 3>* normal_face(int face) const;
   const std::array<int, 3>* uv_face(int face) const;
-  const MeshBvh& bvh() const;
+  const TriangleTree& tree() const;
 
   MeshData data_;
   Bounds3 bounds_;
-  mutable std::once_flag bvh_built_;
-  mutable std::unique_ptr<MeshBvh> bvh_;
+  mutable std::once_flag tree_built_;
+  mutable std::unique_ptr<TriangleTree> tree_;
 };
 
 }  // namespace snell::geometry

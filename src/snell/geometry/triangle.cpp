@@ -2,8 +2,6 @@
 
 #include <stdexcept>
 
-#include "snell/geometry/triangle_kernel.hpp"
-
 namespace snell::geometry {
 
 Triangle::Triangle(const Vec3& a, const Vec3& b, const Vec3& c) : v_{a, b, c} {
@@ -29,7 +27,7 @@ Bounds3 Triangle::bounds() const {
 
 bool Triangle::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
   TriangleHit th;
-  if (!intersect_triangle(v_[0], v_[1], v_[2], ray, t_min, t_max, th)) return false;
+  if (!crossing(ray, t_min, t_max, th)) return false;
   hit = LocalHit{};
   hit.t = th.t;
   hit.normal = normalize(cross(v_[1] - v_[0], v_[2] - v_[0]));

@@ -2,6 +2,7 @@
 #include <array>
 
 #include "snell/geometry/shape.hpp"
+#include "snell/geometry/triangle_kernel.hpp"
 
 namespace snell::geometry {
 
@@ -16,6 +17,13 @@ class Triangle final : public Shape {
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override;
   std::string_view kind() const override { return smooth_ ? "smooth_triangle" : "triangle"; }
+
+  const std::array<Vec3, 3>& vertices() const { return v_; }
+  /// The crossing intersect() reports, without its normals (accelerators test many triangles this way
+  /// and complete only the nearest).
+  bool crossing(const Ray& ray, double t_min, double t_max, TriangleHit& out) const {
+    return intersect_triangle(v_[0], v_[1], v_[2], ray, t_min, t_max, out);
+  }
 
  private:
   std::array<Vec3, 3> v_;

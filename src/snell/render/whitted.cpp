@@ -100,7 +100,10 @@ void report_own_light(TraceObserver& observer, const Color& colour, const materi
 
 Vec3 offset_origin(const Vec3& p, const Vec3& side) {
   const double scale = kAbsoluteOffset + kRelativeOffset * max_component(abs(p));
-  return p + (dot(side, side) > 0 ? normalize(side) : side) * scale;
+  // Callers mostly pass unit normals already: those skip the square root and division.
+  const double length2 = dot(side, side);
+  if (std::fabs(length2 - 1) < 1e-12 || length2 == 0) return p + side * scale;
+  return p + side * (scale / std::sqrt(length2));
 }
 
 WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)

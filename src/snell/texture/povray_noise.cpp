@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "snell/math/cpu.hpp"
 #include "snell/math/simd.hpp"
 
 namespace snell::texture {
@@ -277,10 +278,7 @@ SNELL_SIMD_INLINE void lattice_noise_all(const double* x, const double* y, const
 /// the program starts; both give the scalar code's bits.
 void lattice_noise_lanes(const double* x, const double* y, const double* z, double* out) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  static const bool avx2 = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2");
-  }();
+  static const bool avx2 = math::has_avx2();
   if (avx2) return lattice_noise_avx2(x, y, z, out);
 #endif
   lattice_noise_all<2>(x, y, z, out);

@@ -7,14 +7,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include "snell/accel/float_slabs.hpp"
-#include "snell/accel/ray_box.hpp"
+#include "snell/geometry/float_slabs.hpp"
+#include "snell/geometry/ray_box.hpp"
 #include "snell/math/pcg32.hpp"
 
 namespace {
 
-using snell::accel::FloatBox;
-using snell::accel::FloatSlabs;
+using snell::geometry::FloatBox;
+using snell::geometry::FloatSlabs;
 using snell::math::Pcg32;
 using snell::math::Ray;
 using snell::math::Vec3;

@@ -8,9 +8,9 @@
 #include <emmintrin.h>
 #endif
 
-#include "snell/accel/ray_box.hpp"
+#include "snell/geometry/ray_box.hpp"
 
-namespace snell::accel {
+namespace snell::geometry {
 
 inline void four_slab_tests(const RayBox& ray, const float (&lo)[3][4], const float (&hi)[3][4], double t_min,
                             double t_max, std::array<double, 4>& near_t, std::array<double, 4>& far_t) {
@@ -58,7 +58,7 @@ class DoubleSlabs {
   explicit DoubleSlabs(const math::Ray& ray) : ray_(ray) {}
   static double round_down(double v) { return v; }
   static double round_up(double v) { return v; }
-  template <int W>
+  template <int L = 4, int W>
   int test(const float (&lo)[3][W], const float (&hi)[3][W], double t_min, double t_max,
            double (&entry)[W]) const {
     int mask = 0;
@@ -80,6 +80,24 @@ class DoubleSlabs {
 
  private:
   RayBox ray_;
+
+ public:
+  /// FloatSlabs::Lanes's interface: the ray with a window.
+  template <int L>
+  class Lanes {
+   public:
+    Lanes(const DoubleSlabs& slabs, double t_min, double t_max)
+        : slabs_(slabs), t_min_(t_min), t_max_(t_max) {}
+    void set_t_max(double t_max) { t_max_ = t_max; }
+    template <int W>
+    int test(const float (&lo)[3][W], const float (&hi)[3][W], double (&entry)[W]) const {
+      return slabs_.test(lo, hi, t_min_, t_max_, entry);
+    }
+
+   private:
+    const DoubleSlabs& slabs_;
+    double t_min_, t_max_;
+  };
 };
 
-}  // namespace snell::accel
+}  // namespace snell::geometry

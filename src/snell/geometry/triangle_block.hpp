@@ -1,0 +1,172 @@
+#pragma once
+// Up to eight triangles in single precision, laid out for SIMD tests (one lane per triangle), and the
+// conservative test of a ray against all of them: a filter in front of the double-precision test
+// (triangle_kernel.hpp), which alone decides hits, so that results stay those of the double test.
+//
+// The filter is the watertight test of Woop, Benthin and Wald ("Watertight ray/triangle intersection",
+// JCGT 2(1), 2013): vertices relative to the ray origin are sheared so that the ray runs along +z, and the
+// ray meets the triangle when the three 2D edge functions U, V, W share a sign. Its hit distance is a
+// convex combination of the vertices' sheared depths, so the hit lies between the nearest and the
+// farthest vertex depth: that range, not a division, culls by the ray's window.
+//
+// Why nothing the double test accepts is dropped: with u = 2^-24, R the largest |coordinate| of the
+// block's vertices plus that of the ray origin, and float rounding to nearest,
+//  - each translated coordinate (vertex and origin rounded to float, then subtracted) is within 2.01 u R
+//    of the exact one, and each sheared coordinate (the shear factors dx/dz, dy/dz rounded, |dx/dz| <= 1
+//    as z is the ray's largest axis) within delta = 8.2 u R (kShearError: 10 u R) of the exact shear by the
+//    exact direction, in which the exact ray is the z axis;
+//  - an edge function U = Cx By - Cy Bx then errs by at most delta S + 2 delta^2 + u S^2 / 2, where S is
+//    the sum of the six |sheared x, y| (each factor pair's error, and three roundings of products of size
+//    at most S^2 / 4); a lane is dropped only when some function is below -E and some above +E, E that
+//    bound, so the exact functions cannot share a sign;
+//  - a sheared depth errs by at most 3.1 u R |1 / dz| + u |depth|, and the range is widened by more;
+//  - the double test itself errs (it is Moeller-Trumbore in double, not the exact test): by about
+//    35 * 2^-53 R L in an edge function (L the longest edge), which E also covers, and in its distance by
+//    about 2^-53 R / sin(angle of the ray to the plane), under the depth margin unless the ray lies within
+//    2^-20 of the triangle's plane. Such near edge-on lanes (|U + V + W| <= 2^-20 S^2 + 3 E, which holds
+//    whenever the exact |U + V + W| is below 2^-20 S^2) are always kept, entered at the window's start.
+// NaN and infinite values (huge vertices, rays float cannot hold) make every comparison that drops a lane
+// fail, so such lanes are kept and the double test decides.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "snell/geometry/ray_box.hpp"
+#include "snell/math/float_lanes.hpp"
+#include "snell/math/ray.hpp"
+
+namespace snell::geometry {
+
+/// Six cache lines: the first holds the scalars and ids (read first: the accelerator's ray-kind tag), the
+/// other five the vertices, each row of eight floats 32-byte aligned for whole-register loads.
+struct alignas(64) TriangleBlock {
+  static constexpr int kSize = 8;
+  /// Error scales over the block's triangles: the largest |vertex coordinate| and the longest edge
+  /// (infinite where a vertex is beyond float's range: then no lane is ever dropped).
+  float magnitude = 0;
+  float longest_edge = 0;
+  /// Lanes in use: 0 .. count - 1.
+  uint32_t count = 0;
+  /// The owner's number for each triangle (a face, an object), and 32 bits of its own (the accelerator
+  /// keeps which ray kinds see each triangle).
+  uint32_t tag = 0;
+  uint32_t id[kSize] = {};
+  /// Vertex k's coordinate a of triangle l is v[k][a][l], rounded to the nearest float.
+  alignas(64) float v[3][3][kSize] = {};
+
+  /// Puts triangle (a, b, c) in the next lane.
+  void add(const math::Vec3& a, const math::Vec3& b, const math::Vec3& c, uint32_t triangle_id) {
+    const math::Vec3* vertex[3] = {&a, &b, &c};
+    const int lane = static_cast<int>(count++);
+    for (int k = 0; k < 3; ++k) {
+      for (int axis = 0; axis < 3; ++axis) {
+        const double x = (*vertex[k])[axis];
+        v[k][axis][lane] = static_cast<float>(x);
+        magnitude = std::abs(x) < 1e30 ? std::max(magnitude, float_above(std::abs(x))) : INFINITY;
+      }
+      const double edge = length(*vertex[(k + 1) % 3] - *vertex[k]);
+      longest_edge = std::max(longest_edge, edge < 1e30 ? float_above(edge) : INFINITY);
+    }
+    id[lane] = triangle_id;
+  }
+};
+
+/// One ray prepared for TriangleBlock tests: its largest axis, shear and origin in float.
+class TriangleRay {
+ public:
+  explicit TriangleRay(const math::Ray& ray) {
+    const math::Vec3& d = ray.direction;
+    const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+    kz_ = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    kx_ = (kz_ + 1) % 3;
+    ky_ = (kx_ + 1) % 3;
+    const double dz = d[kz_];
+    const double inverse = 1 / dz;
+    for (int a = 0; a < 3; ++a) {
+      origin_[a] = static_cast<float>(ray.origin[a]);
+      origin_magnitude_ = std::max(origin_magnitude_, float_above(std::abs(ray.origin[a])));
+    }
+    shear_x_ = static_cast<float>(d[kx_] * inverse);
+    shear_y_ = static_cast<float>(d[ky_] * inverse);
+    depth_scale_ = static_cast<float>(inverse);
+    // Rays float cannot represent (origins beyond 1e30, a zero, NaN or tiny direction): every lane kept.
+    usable_ = origin_magnitude_ < 1e30f && std::abs(inverse) < 1e30 && std::isfinite(d[kx_] + d[ky_]);
+  }
+
+  bool usable() const { return usable_; }
+
+  /// Bit l set when the ray may meet lane l's triangle with t in [t_min, t_max] (floats rounded outward
+  /// from the window); entry[l] is then a lower bound of that t. L lanes per instruction.
+  template <int WideL>
+  SNELL_LANES_INLINE unsigned candidates(const TriangleBlock& b, float t_min, float t_max,
+                                         float (&entry)[TriangleBlock::kSize]) const {
+    const unsigned lanes = (1u << b.count) - 1;
+    if (!usable_) {
+      for (float& e : entry) e = -INFINITY;
+      return lanes;
+    }
+    constexpr int L = WideL < TriangleBlock::kSize ? WideL : TriangleBlock::kSize;
+    using F = typename math::lanes::Lanes<L>::F;
+    using M = typename math::lanes::Lanes<L>::M;
+    using math::lanes::load;
+    using math::lanes::splat;
+    constexpr float u = 0x1p-24f;
+    const float r = b.magnitude + origin_magnitude_;
+    const float shear_error = 10 * u * r;
+    // The constant part of the edge function bound: 2 delta^2, and the double test's own error.
+    const float edge_constant = 2 * shear_error * shear_error + 0x1p-40f * r * b.longest_edge;
+    const float depth_error = 3.5f * u * r * std::abs(depth_scale_);
+    unsigned mask = 0;
+    for (int first = 0; first < TriangleBlock::kSize; first += L) {
+      F x[3], y[3], z[3];
+      for (int k = 0; k < 3; ++k) {
+        F px, py, pz, ox, oy, oz, sx, sy, sz;
+        load(px, b.v[k][kx_] + first);
+        load(py, b.v[k][ky_] + first);
+        load(pz, b.v[k][kz_] + first);
+        splat(ox, origin_[kx_]);
+        splat(oy, origin_[ky_]);
+        splat(oz, origin_[kz_]);
+        splat(sx, shear_x_);
+        splat(sy, shear_y_);
+        splat(sz, depth_scale_);
+        pz -= oz;
+        x[k] = (px - ox) - sx * pz;
+        y[k] = (py - oy) - sy * pz;
+        z[k] = sz * pz;
+      }
+      const F e_u = x[2] * y[1] - y[2] * x[1];
+      const F e_v = x[0] * y[2] - y[0] * x[2];
+      const F e_w = x[1] * y[0] - y[1] * x[0];
+      const F s = (F)((M)x[0] & INT32_MAX) + (F)((M)y[0] & INT32_MAX) + (F)((M)x[1] & INT32_MAX) +
+                  (F)((M)y[1] & INT32_MAX) + (F)((M)x[2] & INT32_MAX) + (F)((M)y[2] & INT32_MAX);
+      const F bound = s * (shear_error + u * s) + edge_constant;
+      const F minus_bound = -bound;
+      // Some function clearly negative and some clearly positive: the exact ones cannot share a sign.
+      const M negative = (e_u < minus_bound) | (e_v < minus_bound) | (e_w < minus_bound);
+      const M positive = (e_u > bound) | (e_v > bound) | (e_w > bound);
+      const F det = e_u + e_v + e_w;
+      const M edge_on = (F)((M)det & INT32_MAX) <= s * s * 0x1p-20f + 3 * bound;
+      const F near = z[0] < z[1] ? z[0] : z[1], far = z[0] < z[1] ? z[1] : z[0];
+      F lowest = z[2] < near ? z[2] : near, highest = z[2] < far ? far : z[2];
+      lowest -= (F)((M)lowest & INT32_MAX) * (2 * u) + depth_error;
+      highest += (F)((M)highest & INT32_MAX) * (2 * u) + depth_error;
+      const M beyond = (lowest > t_max) | (highest < t_min);
+      const M dropped = ((negative & positive) | beyond) & ~edge_on;
+      // Edge-on lanes may hit anywhere along the window.
+      const F low = (F)(((M)lowest & ~edge_on) | ((M)(t_min - F{}) & edge_on));
+      math::lanes::store(entry + first, low);
+      mask |= (~math::lanes::bits(dropped) & ((1u << L) - 1)) << first;
+    }
+    return mask & lanes;
+  }
+
+ private:
+  float origin_[3] = {};
+  float origin_magnitude_ = 0;
+  float shear_x_ = 0, shear_y_ = 0, depth_scale_ = 0;
+  int kx_ = 0, ky_ = 1, kz_ = 2;
+  bool usable_ = true;
+};
+
+}  // namespace snell::geometry

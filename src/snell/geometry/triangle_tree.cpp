@@ -1,0 +1,34 @@
+#include "snell/geometry/triangle_tree.hpp"
+
+namespace snell::geometry {
+
+namespace {
+
+// SAH cost of a leaf's block of up to eight triangles, filtered at once, relative to one node visit.
+constexpr double kBlockCost = 2.0;
+
+}  // namespace
+
+TriangleTree::TriangleTree(std::span<const math::Vec3> vertices, std::span<const std::array<int, 3>> faces) {
+  std::vector<math::Bounds3> boxes(faces.size());
+  for (size_t f = 0; f < faces.size(); ++f)
+    boxes[f] =
+        padded(math::Bounds3(vertices[faces[f][0]], vertices[faces[f][1]]).unite(vertices[faces[f][2]]));
+  WideBvh::Input input;
+  input.boxes = boxes;
+  input.cost = {kBlockCost, kBlockCost};
+  input.group = {TriangleBlock::kSize, TriangleBlock::kSize};
+  input.max_leaf = TriangleBlock::kSize;
+  bvh_ = WideBvh(input);
+  bvh_.relabel_leaves([&](uint32_t first, uint32_t count) {
+    TriangleBlock& block = blocks_.emplace_back();
+    for (uint32_t i = first; i < first + count; ++i) {
+      const uint32_t f = bvh_.order()[i];
+      block.add(vertices[faces[f][0]], vertices[faces[f][1]], vertices[faces[f][2]], f);
+    }
+    return static_cast<uint32_t>(blocks_.size() - 1);
+  });
+  blocks_.shrink_to_fit();
+}
+
+}  // namespace snell::geometry

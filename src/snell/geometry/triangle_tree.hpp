@@ -1,0 +1,50 @@
+#pragma once
+// A WideBvh over triangles only, its leaves packed as TriangleBlocks: the mesh shape's structure. The walk
+// hands on the triangles the single-precision filter keeps (triangle_block.hpp), nearest leaves first; the
+// owner tests them in double precision, which alone decides hits.
+#include <array>
+#include <bit>
+#include <span>
+#include <vector>
+
+#include "snell/geometry/triangle_block.hpp"
+#include "snell/geometry/wide_bvh.hpp"
+
+namespace snell::geometry {
+
+class TriangleTree {
+ public:
+  /// Triangle i has the vertices vertices[faces[i][k]]; its id in visits is i.
+  TriangleTree(std::span<const math::Vec3> vertices, std::span<const std::array<int, 3>> faces);
+
+  size_t bytes() const { return bvh_.bytes() + blocks_.capacity() * sizeof(TriangleBlock); }
+  size_t node_count() const { return bvh_.node_count(); }
+
+  /// Calls visit(triangle, t_max) for each triangle that may be hit within [t_min, t_max]; `visit` may
+  /// lower t_max. L lanes per instruction (math/float_lanes.hpp).
+  template <int L, class Visit>
+  SNELL_LANES_INLINE void walk(const math::Ray& ray, double t_min, double t_max, Visit&& visit) const {
+    const TriangleRay triangle_ray(ray);
+    const float low = float_below(t_min);
+    const auto leaf = [&](uint32_t block, uint32_t, double& t) __attribute__((always_inline)) {
+      const TriangleBlock& b = blocks_[block];
+      float entry[TriangleBlock::kSize];
+      for (unsigned m = triangle_ray.candidates<L>(b, low, float_above(t), entry); m != 0; m &= m - 1) {
+        const int lane = std::countr_zero(m);
+        if (entry[lane] > t) continue;
+        visit(b.id[lane], t);
+      }
+      return false;
+    };
+    const auto prefetch = [&](uint32_t block) __attribute__((always_inline)) {
+      prefetch_lines(&blocks_[block], sizeof(TriangleBlock));
+    };
+    bvh_.walk<L>(ray, t_min, t_max, leaf, prefetch);
+  }
+
+ private:
+  WideBvh bvh_;
+  std::vector<TriangleBlock> blocks_;
+};
+
+}  // namespace snell::geometry
