@@ -21,23 +21,26 @@ math::Bounds3 culling_bounds(const scene::Object& object);
 /// inside the box is tested: a ray missing the box never reaches the object (POV-Ray reference,
 /// "Bounded_By"), and a bound smaller than the object (which POV-Ray leaves unspecified) cuts it to the
 /// box, the same for every accelerator, so that culling by the box is exact.
-inline bool test_object(const scene::Object& object, const math::Ray& ray, double t_min, double t_max,
-                        scene::RayKind kind, scene::SurfaceHit& hit) {
+/// What every object test does before the object's own: its visibility to the ray's kind, the test
+/// counters, and its `bounded_by` box, which narrows the window to its span. False when the object cannot
+/// be hit.
+inline bool passes_culls(const scene::Object& object, const math::Ray& ray, double& t_min, double& t_max,
+                         scene::RayKind kind) {
   if (!object.visible_to(kind)) return false;
   count_object_test(object);
   ObjectTestCounter::count();
-  if (object.bounded_by && !object.bounded_by->clip(ray, t_min, t_max)) return false;
-  return object.intersect(ray, t_min, t_max, hit);
+  return !object.bounded_by || object.bounded_by->clip(ray, t_min, t_max);
+}
+
+inline bool test_object(const scene::Object& object, const math::Ray& ray, double t_min, double t_max,
+                        scene::RayKind kind, scene::SurfaceHit& hit) {
+  return passes_culls(object, ray, t_min, t_max, kind) && object.intersect(ray, t_min, t_max, hit);
 }
 
 /// test_object for an occlusion query: whether the object stops the ray, without building its hit.
 inline bool object_blocks(const scene::Object& object, const math::Ray& ray, double t_min, double t_max,
                           scene::RayKind kind) {
-  if (!object.visible_to(kind)) return false;
-  count_object_test(object);
-  ObjectTestCounter::count();
-  if (object.bounded_by && !object.bounded_by->clip(ray, t_min, t_max)) return false;
-  return object.blocks(ray, t_min, t_max);
+  return passes_culls(object, ray, t_min, t_max, kind) && object.blocks(ray, t_min, t_max);
 }
 
 /// Tests every object of `objects`, shrinking `t_max` to the nearest hit; true when any was hit.

@@ -61,7 +61,8 @@ LocalHit Box::face_hit(const Ray& ray, double t, int axis, double sign) const {
   return h;
 }
 
-void Box::gather(const Ray& ray, HitBuffer<2>& hits) const {
+template <typename Buffer>
+void Box::gather(const Ray& ray, Buffer& hits) const {
   double t0, t1;
   int axis0, axis1;
   if (!slabs(ray, t0, t1, axis0, axis1)) return;
@@ -71,20 +72,10 @@ void Box::gather(const Ray& ray, HitBuffer<2>& hits) const {
 }
 
 bool Box::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
-  // The entry precedes the exit, so the nearest kept crossing is the entry when it lies in the window:
-  // only that one is built (as gather would keep both and sort them).
-  double t0, t1;
-  int axis0, axis1;
-  if (!slabs(ray, t0, t1, axis0, axis1)) return false;
-  if (t0 > t_min && t0 < t_max) {
-    hit = face_hit(ray, t0, axis0, ray.direction[axis0] > 0 ? -1.0 : 1.0);
-    return true;
-  }
-  if (t1 > t_min && t1 < t_max && t1 != t0) {
-    hit = face_hit(ray, t1, axis1, ray.direction[axis1] > 0 ? 1.0 : -1.0);
-    return true;
-  }
-  return false;
+  // The entry precedes the exit: once it is kept the window closes and the exit is never built.
+  NearestBuffer hits(t_min, t_max);
+  gather(ray, hits);
+  return hits.nearest(hit);
 }
 
 bool Box::crosses(const Ray& ray, double t_min, double t_max) const {

@@ -23,7 +23,9 @@ class Box final : public Shape {
  private:
   /// The slab method's entry and exit parameters and the axes of their faces; false on a miss.
   bool slabs(const Ray& ray, double& t0, double& t1, int& axis0, int& axis1) const;
-  void gather(const Ray& ray, HitBuffer<2>& hits) const;
+  /// Every crossing into `hits` (a HitBuffer<2>, or a NearestBuffer for intersect).
+  template <typename Buffer>
+  void gather(const Ray& ray, Buffer& hits) const;
   /// The crossing at `t` through the face across `axis` whose outward normal is `sign` along it.
   LocalHit face_hit(const Ray& ray, double t, int axis, double sign) const;
 

@@ -26,11 +26,16 @@ Plane::Plane(const Vec3& normal, double distance) {
   }
 }
 
-bool Plane::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
+bool Plane::crossing(const Ray& ray, double t_min, double t_max, double& t) const {
   const double denom = dot(normal_, ray.direction);
   if (denom == 0 || !std::isfinite(denom)) return false;
-  const double t = (distance_ - dot(normal_, ray.origin)) / denom;
-  if (!(t > t_min && t < t_max)) return false;
+  t = (distance_ - dot(normal_, ray.origin)) / denom;
+  return t > t_min && t < t_max;
+}
+
+bool Plane::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
+  double t;
+  if (!crossing(ray, t_min, t_max, t)) return false;
   hit = LocalHit{};
   hit.t = t;
   hit.normal = normal_;
@@ -40,10 +45,8 @@ bool Plane::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit)
 }
 
 bool Plane::crosses(const Ray& ray, double t_min, double t_max) const {
-  const double denom = dot(normal_, ray.direction);
-  if (denom == 0 || !std::isfinite(denom)) return false;
-  const double t = (distance_ - dot(normal_, ray.origin)) / denom;
-  return t > t_min && t < t_max;
+  double t;
+  return crossing(ray, t_min, t_max, t);
 }
 
 void Plane::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {

@@ -22,6 +22,8 @@ class Plane final : public Shape {
   double distance() const { return distance_; }
 
  private:
+  /// The ray's parameter where it crosses the plane, when that lies in (t_min, t_max).
+  bool crossing(const Ray& ray, double t_min, double t_max, double& t) const;
   Vec3 normal_;
   double distance_;
   Bounds3 bounds_ = Bounds3::infinite();

@@ -48,21 +48,23 @@ LocalHit Sphere::make_hit(const Ray& ray, double t) const {
   return hit;
 }
 
-bool Sphere::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
+bool Sphere::nearest_root(const Ray& ray, double t_min, double t_max, double& t) const {
   double t0, t1;
   if (!roots(ray, t0, t1)) return false;
-  double t = t0;
-  if (!(t > t_min)) t = t1;
-  if (!(t > t_min) || !(t < t_max)) return false;
+  t = t0 > t_min ? t0 : t1;
+  return t > t_min && t < t_max;
+}
+
+bool Sphere::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
+  double t;
+  if (!nearest_root(ray, t_min, t_max, t)) return false;
   hit = make_hit(ray, t);
   return true;
 }
 
 bool Sphere::crosses(const Ray& ray, double t_min, double t_max) const {
-  double t0, t1;
-  if (!roots(ray, t0, t1)) return false;
-  const double t = t0 > t_min ? t0 : t1;
-  return t > t_min && t < t_max;
+  double t;
+  return nearest_root(ray, t_min, t_max, t);
 }
 
 void Sphere::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {

@@ -25,6 +25,8 @@ class Sphere final : public Shape {
  private:
   /// Both roots of |o + t d - c|^2 = r^2, t0 <= t1; false when the ray misses.
   bool roots(const Ray& ray, double& t0, double& t1) const;
+  /// The nearest root in (t_min, t_max); false when there is none.
+  bool nearest_root(const Ray& ray, double t_min, double t_max, double& t) const;
   LocalHit make_hit(const Ray& ray, double t) const;
 
   Vec3 center_;
