@@ -102,8 +102,8 @@ TEST(EmbreeMeshTest, OccluderOfNativeMeshesAgreesWithBruteForce) {
 
 TEST(EmbreeMeshTest, SmallMeshesStayUserGeometry) {
   scene::Scene s;
-  s.objects.push_back(make_object(uv_sphere(3, 4)));
-  ASSERT_LT(uv_sphere(3, 4)->data().faces.size(), accel::kNativeMeshMinFaces);
+  s.objects.push_back(make_object(uv_sphere(2, 3)));
+  ASSERT_LT(uv_sphere(2, 3)->data().faces.size(), accel::kNativeMeshMinFaces);
   EXPECT_EQ(accel::make_accelerator("embree", s)->stats().mesh_instances, 0u);
 }
 

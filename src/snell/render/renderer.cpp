@@ -205,6 +205,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
     ctx.rng.seed(math::mix_seed(pixel, 0x1e45, frame, options_.seed), stream);
     const double shift_u = ctx.rng.next_double(), shift_v = ctx.rng.next_double();
     const double pix_u = ctx.rng.next_double(), pix_v = ctx.rng.next_double();
+    const uint64_t shutter_seed = sampling.pixel_seed(x, y);
     Color sum{0, 0, 0}, sum_sq{0, 0, 0};
     int n = 0;
     for (int batch = 0; n < cam.blur_samples; ++batch) {
@@ -218,7 +219,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
         const double jitter_u = ctx.rng.next_double(), jitter_v = ctx.rng.next_double();
         const math::Vec2 lens = scene::hex_lens_sample(n, cam.blur_samples, jitter_u, jitter_v)
                                     .value_or(scene::lens_sample(n, shift_u, shift_v));
-        const double time = sampling.shutter_time(sampling.pixel_seed(x, y), n, cam.blur_samples);
+        const double time = sampling.shutter_time(shutter_seed, n, cam.blur_samples);
         const auto ray =
             camera->generate_lens_ray((px + dx - 0.5) / w, (py + dy - 0.5) / h, lens.u, lens.v, time);
         const Color c = ray ? finite_or_black(integrator->trace_camera_ray(*ray, ctx, camera->max_distance()),

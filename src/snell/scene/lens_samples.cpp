@@ -3,13 +3,14 @@
 #include <cmath>
 
 #include "snell/math/constants.hpp"
+#include "snell/math/fraction.hpp"
 
 namespace snell::scene {
 
 math::Vec2 r2_point(int index, double shift_u, double shift_v) {
   // R2: the plastic number g (g^3 = g + 1) gives steps 1/g and 1/g^2 in the unit square.
   constexpr double g = 1.32471795724474602596;
-  return {std::fmod(shift_u + index / g, 1.0), std::fmod(shift_v + index / (g * g), 1.0)};
+  return {math::fraction(shift_u + index / g), math::fraction(shift_v + index / (g * g))};
 }
 
 math::Vec2 lens_sample(int index, double shift_u, double shift_v) {

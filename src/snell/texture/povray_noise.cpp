@@ -136,22 +136,34 @@ struct LatticeAxis {
   }
 };
 
-/// The 8 corners of the lattice cell around a point: their coefficient indices, S-curve weights and
-/// offsets from the point.
+/// The 8 corners of the lattice cell around a point: their coefficient indices, and per axis the S-curve
+/// weights and offsets of the cell's two sides, from which each corner's weight and offset follow.
 struct LatticeCell {
   int index[8];
-  double weight[8];
-  Vec3 offset[8];
+  double side_weight[3][2];  // axis a, side 0 or 1: 1 - s or s
+  double side_offset[3][2];  // the point's offset from that side: o or o - 1
   explicit LatticeCell(const Vec3& p) {
-    const LatticeAxis ax(p.x), ay(p.y), az(p.z);
-    const LatticeHash& hash = lattice_hash();
-    const double s[3] = {s_curve(ax.offset), s_curve(ay.offset), s_curve(az.offset)};
-    for (int corner = 0; corner < 8; ++corner) {
-      const int dx = corner & 1, dy = (corner >> 1) & 1, dz = corner >> 2;
-      index[corner] = hash.coefficient(hash.pair(ax.cell + dx, ay.cell + dy), az.cell + dz);
-      weight[corner] = (dx ? s[0] : 1 - s[0]) * (dy ? s[1] : 1 - s[1]) * (dz ? s[2] : 1 - s[2]);
-      offset[corner] = Vec3{ax.offset - dx, ay.offset - dy, az.offset - dz};
+    const LatticeAxis axes[3] = {LatticeAxis(p.x), LatticeAxis(p.y), LatticeAxis(p.z)};
+    for (int a = 0; a < 3; ++a) {
+      const double s = s_curve(axes[a].offset);
+      side_weight[a][0] = 1 - s;
+      side_weight[a][1] = s;
+      side_offset[a][0] = axes[a].offset;
+      side_offset[a][1] = axes[a].offset - 1;
     }
+    // coefficient(pair(x + dx, y + dy), z + dz) for the 8 corners, each shared table entry read once.
+    const std::uint16_t* t = lattice_hash().table.data();
+    const unsigned x0 = t[axes[0].cell], x1 = t[axes[0].cell + 1], y = static_cast<unsigned>(axes[1].cell);
+    const unsigned column[4] = {t[x0 ^ y], t[x1 ^ y], t[x0 ^ (y + 1)], t[x1 ^ (y + 1)]};
+    for (int corner = 0; corner < 8; ++corner)
+      index[corner] = t[column[corner & 3] ^ static_cast<unsigned>(axes[2].cell + (corner >> 2))] & 0xFF;
+  }
+  /// Corner c = dx + 2 dy + 4 dz: its S-curve weight and the point's offset from it.
+  double weight(int c) const {
+    return side_weight[0][c & 1] * side_weight[1][(c >> 1) & 1] * side_weight[2][c >> 2];
+  }
+  Vec3 offset(int c) const {
+    return {side_offset[0][c & 1], side_offset[1][(c >> 1) & 1], side_offset[2][c >> 2]};
   }
 };
 
@@ -165,7 +177,7 @@ double value_term(int k, const Vec3& d) {
 double lattice_noise(const Vec3& p) {
   const LatticeCell cell(p);
   double sum = 0;
-  for (int c = 0; c < 8; ++c) sum += cell.weight[c] * value_term(cell.index[c], cell.offset[c]);
+  for (int c = 0; c < 8; ++c) sum += cell.weight(c) * value_term(cell.index[c], cell.offset(c));
   return sum;
 }
 
@@ -328,6 +340,51 @@ double turbulence_octave(const Vec3& p, NoiseGenerator generator) {
   return generator == NoiseGenerator::original ? n : 2.0 * n - 0.5;
 }
 
+/// DNoise's coefficient rows of corner index k with the three components side by side: term j of
+/// component a is entry k + 4a + j (each component draws 4 entries further along the table, POV-Ray's
+/// DNoise), term 0 halved as value_term halves it; lane 3 is unused.
+struct DNoiseCoefficients {
+  alignas(32) std::array<std::array<std::array<double, 4>, 4>, 256> rows{};
+  DNoiseCoefficients() {
+    for (int k = 0; k < 256; ++k)
+      for (int term = 0; term < 4; ++term)
+        for (int axis = 0; axis < 3; ++axis)
+          rows[k][term][axis] = (term == 0 ? 0.5 : 1.0) * kCoefficients[k + 4 * axis + term];
+  }
+};
+
+const DNoiseCoefficients& dnoise_coefficients() {
+  static const DNoiseCoefficients c;
+  return c;
+}
+
+/// The DNoise sum over a cell's corners, the three components' value_terms as one 4-wide computation:
+/// per lane the scalar operations in their order (no fused multiply-add, math/simd.hpp), so every build
+/// gives the same bits.
+SNELL_SIMD_INLINE Vec3 dnoise_sum_lanes(const LatticeCell& cell) {
+  using V = simd::Vec<4>::V;
+  const DNoiseCoefficients& k = dnoise_coefficients();
+  V sum{};
+  for (int c = 0; c < 8; ++c) {
+    const auto& row = k.rows[cell.index[c]];
+    const Vec3 d = cell.offset(c);
+    const V term = simd::load<V>(row[0].data()) + simd::load<V>(row[1].data()) * d.x +
+                   simd::load<V>(row[2].data()) * d.y + simd::load<V>(row[3].data()) * d.z;
+    sum += cell.weight(c) * term;
+  }
+  return {sum[0], sum[1], sum[2]};
+}
+
+Vec3 dnoise_sum(const LatticeCell& cell) {
+  return dnoise_sum_lanes(cell);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+[[gnu::target("avx2")]] Vec3 dnoise_sum_avx2(const LatticeCell& cell) {
+  return dnoise_sum_lanes(cell);
+}
+#endif
+
 }  // namespace
 
 double povray_noise(const Vec3& p, NoiseGenerator generator) {
@@ -386,13 +443,12 @@ math::Vec2 povray_jitter2d(double x, double y) {
 }
 
 Vec3 povray_dnoise(const Vec3& p) {
-  // Each component draws its coefficients 4 entries further along the table (POV-Ray's DNoise).
   const LatticeCell cell(p);
-  Vec3 sum{0, 0, 0};
-  for (int c = 0; c < 8; ++c)
-    for (int axis = 0; axis < 3; ++axis)
-      sum[axis] += cell.weight[c] * value_term(cell.index[c] + 4 * axis, cell.offset[c]);
-  return sum;
+#if defined(__x86_64__) && defined(__GNUC__)
+  static const bool avx2 = math::has_avx2();
+  if (avx2) return dnoise_sum_avx2(cell);
+#endif
+  return dnoise_sum(cell);
 }
 
 double povray_turbulence(const Vec3& p, int octaves, double lambda, double omega, NoiseGenerator generator) {

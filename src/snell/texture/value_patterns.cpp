@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "snell/math/fraction.hpp"
 #include "snell/texture/povray_noise.hpp"
 
 namespace snell::texture {
@@ -22,11 +23,11 @@ double clipped_falloff(double d) {
 
 double GradientPattern::value(const Vec3& p) const {
   const double v = dot(p, direction_);
-  return v > 1 ? std::fmod(v, 1.0) : v;
+  return v > 1 ? math::fraction(v) : v;
 }
 
 double OnionPattern::value(const Vec3& p) const {
-  return std::fmod(length(p), 1.0);
+  return math::fraction(length(p));
 }
 
 double SphericalPattern::value(const Vec3& p) const {
