@@ -1,5 +1,6 @@
 #pragma once
-// `--accel NAME` for every subcommand: "auto" is Embree when built, else brute force.
+// `--accel NAME` for every subcommand: "auto" is the box list for scenes of a few objects
+// (accel/box_list.hpp), else Embree when built, else brute force.
 #include <memory>
 #include <string>
 

@@ -37,8 +37,9 @@ void validate(CliOptions& o) {
                      "'");
   if (o.bits != 8 && o.bits != 16) throw UsageError("bit depth must be 8 or 16");
   if (o.accel != "auto" && o.accel != "embree" && o.accel != "bvh" && o.accel != "octree" &&
-      o.accel != "grid" && o.accel != "none")
-    throw UsageError("unknown accelerator '" + o.accel + "' (expected embree, bvh, octree, grid or none)");
+      o.accel != "grid" && o.accel != "list" && o.accel != "none")
+    throw UsageError("unknown accelerator '" + o.accel +
+                     "' (expected embree, bvh, octree, grid, list or none)");
   std::error_code ec;
   if (!fs::exists(o.input, ec)) throw UsageError("scene file '" + o.input.string() + "' does not exist");
   if (fs::is_directory(o.input, ec)) throw UsageError("scene file '" + o.input.string() + "' is a folder");

@@ -139,7 +139,7 @@ TEST(EmbreeAcceleratorTest, ConcurrentQueriesAgreeWithBruteForce) {
 TEST(AcceleratorTest, OccluderAgreesWithBruteForce) {
   const scene::Scene s = random_scene(33, 300);
   const auto brute = accel::make_accelerator("none", s);
-  for (const char* kind : {"embree", "bvh", "octree", "grid", "none"}) {
+  for (const char* kind : {"embree", "bvh", "octree", "grid", "list", "none"}) {
     const auto a = accel::make_accelerator(kind, s);
     math::Pcg32 rng(5);
     int blocked = 0, mismatches = 0;

@@ -110,6 +110,11 @@ TEST_P(OwnAcceleratorTest, StatsDescribeTheStructure) {
   if (GetParam() == "embree") return;  // Embree does not tell its node count or memory
   EXPECT_EQ(a->stats().objects, 1002u);
   EXPECT_EQ(a->stats().unbounded_objects, 2u);  // the two planes
+  if (GetParam() == "list") {                   // no tree: one box per bounded object
+    EXPECT_EQ(a->stats().nodes, 0u);
+    EXPECT_EQ(a->stats().memory_bytes, 1000 * sizeof(math::Bounds3));
+    return;
+  }
   EXPECT_GT(a->stats().nodes, 8u);
   EXPECT_GT(a->stats().memory_bytes, 1000 * sizeof(void*));
 }
@@ -125,7 +130,8 @@ TEST_P(OwnAcceleratorTest, EmptyAndUnboundedOnlyScenes) {
   EXPECT_DOUBLE_EQ(hit.t, 0.5);  // y = -1 reached at t = 0.5 with direction length 2
 }
 
-INSTANTIATE_TEST_SUITE_P(Kinds, OwnAcceleratorTest, testing::Values("embree", "bvh", "octree", "grid"),
+INSTANTIATE_TEST_SUITE_P(Kinds, OwnAcceleratorTest,
+                         testing::Values("embree", "bvh", "octree", "grid", "list"),
                          [](const auto& info) { return info.param; });
 
 class BoundedByTest : public testing::TestWithParam<std::string> {};
@@ -173,7 +179,8 @@ TEST_P(BoundedByTest, RandomBoundsMatchBruteForce) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Kinds, BoundedByTest, testing::Values("embree", "bvh", "octree", "grid", "none"),
+INSTANTIATE_TEST_SUITE_P(Kinds, BoundedByTest,
+                         testing::Values("embree", "bvh", "octree", "grid", "list", "none"),
                          [](const auto& info) { return info.param; });
 
 TEST(MakeAcceleratorTest, KnowsEveryName) {

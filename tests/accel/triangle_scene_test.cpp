@@ -120,7 +120,7 @@ TEST_P(TriangleSceneTest, OccluderAgreesWithBruteForce) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Kinds, TriangleSceneTest, testing::Values("embree", "bvh", "octree", "grid"),
+INSTANTIATE_TEST_SUITE_P(Kinds, TriangleSceneTest, testing::Values("embree", "bvh", "octree", "grid", "list"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

@@ -36,7 +36,8 @@ class Accelerator {
   virtual AcceleratorStats stats() const = 0;
 };
 
-/// `kind` is "embree", "bvh", "octree", "grid" or "none" (brute force). Throws std::invalid_argument for
+/// `kind` is "embree", "bvh", "octree", "grid", "list" (each object culled by its box, no tree) or "none"
+/// (brute force). Throws std::invalid_argument for
 /// unknown kinds.
 std::unique_ptr<Accelerator> make_accelerator(std::string_view kind, const scene::Scene& scene);
 
