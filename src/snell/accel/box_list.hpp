@@ -6,13 +6,15 @@
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/box_lanes.hpp"
 #include "snell/accel/indexed_objects.hpp"
 
 namespace snell::accel {
 
 /// Most bounded objects for which `auto` picks the list. Callgrind instructions per render (80x60) of
-/// POV-Ray scenes, list against Embree: 2 objects (csg/granite) -12%, 3 (crystal) -11%, 4 (pigmap,
-/// phot_met_glass) -6% and -4%, 10 (primitiv) -2%, 16 (pigment, focalblur) +19% and +22%, 76 (golds) +165%.
+/// POV-Ray scenes, list (boxes four at a time) against Embree: 2 objects (csg/granite) -12%, 3 (crystal)
+/// -13%, 4 (pigmap, phot_met_glass; boxes one at a time) -6% and -4%, 16 (focalblur, pigment) +3.5% and
+/// +8.7%, 18 (wood_1) +0.7%, 76 (golds) +97%.
 inline constexpr size_t kBoxListMaxObjects = 8;
 
 /// Whether `auto` should take the list for `scene`: at most kBoxListMaxObjects bounded objects and no mesh,
@@ -32,6 +34,7 @@ class BoxList final : public Accelerator {
 
  private:
   IndexedObjects objects_;
+  BoxLanes lanes_;  // objects_.boxes, four at a time
   AcceleratorStats stats_;
 };
 
