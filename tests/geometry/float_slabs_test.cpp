@@ -43,12 +43,11 @@ bool exact_overlap(const Ray& ray, const FloatBox& box, double t_min, double t_m
 }
 
 struct alignas(16) FourBoxes {
-  float lo[3][4];
-  float hi[3][4];
+  float planes[6][4];  // rows 0-2 lo, 3-5 hi
   void set(int k, const FloatBox& b) {
     for (int a = 0; a < 3; ++a) {
-      lo[a][k] = b.lo[a];
-      hi[a][k] = b.hi[a];
+      planes[a][k] = b.lo[a];
+      planes[3 + a][k] = b.hi[a];
     }
   }
 };
@@ -100,7 +99,7 @@ TEST(FloatSlabsTest, NeverDropsABoxTheExactRayMeets) {
     ASSERT_TRUE(slabs.usable());
     float entry[4];
     const int mask =
-        slabs.test(boxes.lo, boxes.hi, FloatSlabs::round_down(t_min), FloatSlabs::round_up(t_max), entry);
+        slabs.test(boxes.planes, FloatSlabs::round_down(t_min), FloatSlabs::round_up(t_max), entry);
     for (int k = 0; k < 4; ++k) {
       long double exact_entry;
       if (!exact_overlap(ray, box[k], t_min, t_max, exact_entry)) continue;
@@ -124,7 +123,7 @@ TEST(FloatSlabsTest, TheEmptySlotIsNeverEntered) {
     if (trial % 4 == 0) dir[trial % 3] = 0;
     const FloatSlabs slabs(Ray{{uniform(rng, -1e3, 1e3), 0, 0}, normalize(dir), 0});
     float entry[4];
-    EXPECT_EQ(slabs.test(boxes.lo, boxes.hi, 0.0f, INFINITY, entry), 0);
+    EXPECT_EQ(slabs.test(boxes.planes, 0.0f, INFINITY, entry), 0);
   }
 }
 

@@ -68,7 +68,7 @@ Bvh::Bvh(const scene::Scene& scene) {
 template <int L, class Done>
 SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
   const math::Ray& ray = nearest.ray();
-  const geometry::TriangleRay triangle_ray(ray);
+  const geometry::TriangleRay::Lanes<L> triangle_ray{geometry::TriangleRay(ray)};
   const float t_min = geometry::float_below(nearest.t_min());
   const auto leaf = [&](uint32_t label, uint32_t count, double& t_max) __attribute__((always_inline)) {
     bool hit = false;
@@ -80,7 +80,7 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
         for (uint32_t m = visible; m != 0; m &= m - 1)
           count_object_test(*triangles_[block.id[std::countr_zero(m)]].object);
       float entry[geometry::TriangleBlock::kSize];
-      uint32_t m = triangle_ray.candidates<L>(block, t_min, geometry::float_above(t_max), entry) & visible;
+      uint32_t m = triangle_ray.candidates(block, t_min, geometry::float_above(t_max), entry) & visible;
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > nearest.t_max()) continue;

@@ -14,6 +14,9 @@
 //    Widening the clipped interval by kRelativeSlack of its ends' magnitudes (kRelativeSlack > gamma_3)
 //    therefore gives near <= N and far >= F, so a box the exact ray meets is kept, and `entry` never lies
 //    beyond the exact entry, so culling a pending child by the nearest hit is safe.
+//  - The window starts at t_min >= 0, so near >= 0 and the widening is one product per end: near scaled by
+//    1 - kRelativeSlack, far by 1 + kRelativeSlack (a negative far only moves further below near; an
+//    infinite end stays infinite). Walks with t_min < 0 take the double-precision test.
 // Rays this cannot represent (origins beyond 1e30, or direction components so small that their
 // reciprocal overflows a float) are reported by `usable()` and walked with the double-precision test.
 #include <cmath>
@@ -47,8 +50,10 @@ class FloatSlabs {
       // one rounded up.
       near_origin_[a] = negative ? round_down(o) : round_up(o);
       far_origin_[a] = negative ? round_up(o) : round_down(o);
-      // Offsets (in floats) of the near and far planes in a node's lo/hi rows for this direction.
-      near_row_[a] = negative;
+      // The rows of a box array (lo x, y, z, then hi x, y, z) holding the near and far planes for this
+      // direction, chosen once per ray rather than per node (as Embree's nearX / farX).
+      near_row_[a] = negative ? 3 + a : a;
+      far_row_[a] = negative ? a : 3 + a;
     }
   }
 
@@ -59,12 +64,13 @@ class FloatSlabs {
   static float round_down(double v) { return float_below(v); }
   static float round_up(double v) { return float_above(v); }
 
-  /// Bit k of the result is set when the ray may cross box k of `lo`/`hi` (corners as [axis][box]) within
-  /// [t_min, t_max]; entry[k] is then a lower bound of where it enters. L boxes per instruction.
+  /// Bit k of the result is set when the ray may cross box k of `planes` (rows 0-2: lo x, y, z; rows 3-5:
+  /// hi) within [t_min, t_max], 0 <= t_min; entry[k] is then a lower bound of where it enters. L boxes per
+  /// instruction.
   template <int L = 4, int N>
-  SNELL_LANES_INLINE int test(const float (&lo)[3][N], const float (&hi)[3][N], float t_min, float t_max,
+  SNELL_LANES_INLINE int test(const float (&planes)[6][N], float t_min, float t_max,
                               float (&entry)[N]) const {
-    return Lanes<L>(*this, t_min, t_max).test(lo, hi, entry);
+    return Lanes<L>(*this, t_min, t_max).test(planes, entry);
   }
 
   /// The ray's values spread over L lanes once, with a window: a walk that tests many nodes then loads
@@ -82,6 +88,7 @@ class FloatSlabs {
         splat(far_origin_[a], slabs.far_origin_[a]);
         splat(inverse_[a], slabs.inverse_[a]);
         near_row_[a] = slabs.near_row_[a];
+        far_row_[a] = slabs.far_row_[a];
       }
       splat(t_min_, t_min);
       splat(t_max_, t_max);
@@ -90,7 +97,7 @@ class FloatSlabs {
 
     /// FloatSlabs::test over the window held.
     template <int N>
-    SNELL_LANES_INLINE int test(const float (&lo)[3][N], const float (&hi)[3][N], float (&entry)[N]) const {
+    SNELL_LANES_INLINE int test(const float (&planes)[6][N], float (&entry)[N]) const {
       static_assert(N % L == 0, "boxes come in groups of L");
       using math::lanes::load;
       int mask = 0;
@@ -98,8 +105,8 @@ class FloatSlabs {
         F near = t_min_, far = t_max_;
         for (int a = 0; a < 3; ++a) {
           F near_plane, far_plane;
-          load(near_plane, (near_row_[a] ? hi[a] : lo[a]) + first);
-          load(far_plane, (near_row_[a] ? lo[a] : hi[a]) + first);
+          load(near_plane, planes[near_row_[a]] + first);
+          load(far_plane, planes[far_row_[a]] + first);
           // x > y ? x : y (maxps), so a NaN distance (0 * inf: the origin on a slab plane of a ray parallel
           // to it) leaves the interval as it was; likewise the minimum.
           const F tn = (near_plane - near_origin_[a]) * inverse_[a];
@@ -107,11 +114,9 @@ class FloatSlabs {
           near = tn > near ? tn : near;
           far = tf < far ? tf : far;
         }
-        near -= (F)((M)near & INT32_MAX) * kRelativeSlack;
-        far += (F)((M)far & INT32_MAX) * kRelativeSlack;
+        near *= 1 - kRelativeSlack;
+        far *= 1 + kRelativeSlack;
         math::lanes::store(entry + first, near);
-        // An infinite end widened by infinity is NaN, which fails the comparison: such a box is truly
-        // missed.
         const M kept = near <= far;
         mask |= static_cast<int>(math::lanes::bits(kept)) << first;
       }
@@ -121,14 +126,15 @@ class FloatSlabs {
    private:
     F near_origin_[3], far_origin_[3], inverse_[3];
     F t_min_, t_max_;
-    bool near_row_[3];
+    int near_row_[3], far_row_[3];
   };
 
  private:
   float near_origin_[3] = {};
   float far_origin_[3] = {};
   float inverse_[3] = {};
-  bool near_row_[3] = {};
+  int near_row_[3] = {0, 1, 2};
+  int far_row_[3] = {3, 4, 5};
   bool usable_ = true;
 };
 

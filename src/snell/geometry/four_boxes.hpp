@@ -59,16 +59,15 @@ class DoubleSlabs {
   static double round_down(double v) { return v; }
   static double round_up(double v) { return v; }
   template <int L = 4, int W>
-  int test(const float (&lo)[3][W], const float (&hi)[3][W], double t_min, double t_max,
-           double (&entry)[W]) const {
+  int test(const float (&planes)[6][W], double t_min, double t_max, double (&entry)[W]) const {
     int mask = 0;
     for (int first = 0; first < W; first += 4) {
       // This path is rare (see FloatSlabs::usable): copying each group of four costs nothing measurable.
       float group_lo[3][4], group_hi[3][4];
       for (int a = 0; a < 3; ++a)
         for (int k = 0; k < 4; ++k) {
-          group_lo[a][k] = lo[a][first + k];
-          group_hi[a][k] = hi[a][first + k];
+          group_lo[a][k] = planes[a][first + k];
+          group_hi[a][k] = planes[3 + a][first + k];
         }
       std::array<double, 4> near_t, far_t;
       four_slab_tests(ray_, group_lo, group_hi, t_min, t_max, near_t, far_t);
@@ -90,8 +89,8 @@ class DoubleSlabs {
         : slabs_(slabs), t_min_(t_min), t_max_(t_max) {}
     void set_t_max(double t_max) { t_max_ = t_max; }
     template <int W>
-    int test(const float (&lo)[3][W], const float (&hi)[3][W], double (&entry)[W]) const {
-      return slabs_.test(lo, hi, t_min_, t_max_, entry);
+    int test(const float (&planes)[6][W], double (&entry)[W]) const {
+      return slabs_.test(planes, t_min_, t_max_, entry);
     }
 
    private:

@@ -100,66 +100,96 @@ class TriangleRay {
   template <int WideL>
   SNELL_LANES_INLINE unsigned candidates(const TriangleBlock& b, float t_min, float t_max,
                                          float (&entry)[TriangleBlock::kSize]) const {
-    const unsigned lanes = (1u << b.count) - 1;
-    if (!usable_) {
-      for (float& e : entry) e = -INFINITY;
-      return lanes;
-    }
-    constexpr int L = WideL < TriangleBlock::kSize ? WideL : TriangleBlock::kSize;
+    return Lanes<WideL>(*this).candidates(b, t_min, t_max, entry);
+  }
+
+  /// The ray's values spread over the lanes once, for a walk that filters many blocks (as
+  /// FloatSlabs::Lanes): per block only its loads and arithmetic remain.
+  template <int WideL>
+  class Lanes {
+   public:
+    static constexpr int L = WideL < TriangleBlock::kSize ? WideL : TriangleBlock::kSize;
     using F = typename math::lanes::Lanes<L>::F;
     using M = typename math::lanes::Lanes<L>::M;
-    using math::lanes::load;
-    using math::lanes::splat;
-    constexpr float u = 0x1p-24f;
-    const float r = b.magnitude + origin_magnitude_;
-    const float shear_error = 10 * u * r;
-    // The constant part of the edge function bound: 2 delta^2, and the double test's own error.
-    const float edge_constant = 2 * shear_error * shear_error + 0x1p-40f * r * b.longest_edge;
-    const float depth_error = 3.5f * u * r * std::abs(depth_scale_);
-    unsigned mask = 0;
-    for (int first = 0; first < TriangleBlock::kSize; first += L) {
-      F x[3], y[3], z[3];
-      for (int k = 0; k < 3; ++k) {
-        F px, py, pz, ox, oy, oz, sx, sy, sz;
-        load(px, b.v[k][kx_] + first);
-        load(py, b.v[k][ky_] + first);
-        load(pz, b.v[k][kz_] + first);
-        splat(ox, origin_[kx_]);
-        splat(oy, origin_[ky_]);
-        splat(oz, origin_[kz_]);
-        splat(sx, shear_x_);
-        splat(sy, shear_y_);
-        splat(sz, depth_scale_);
-        pz -= oz;
-        x[k] = (px - ox) - sx * pz;
-        y[k] = (py - oy) - sy * pz;
-        z[k] = sz * pz;
+
+    SNELL_LANES_INLINE explicit Lanes(const TriangleRay& ray)
+        : origin_magnitude_(ray.origin_magnitude_),
+          depth_scale_magnitude_(std::abs(ray.depth_scale_)),
+          usable_(ray.usable_) {
+      using math::lanes::splat;
+      const int axis[3] = {ray.kx_, ray.ky_, ray.kz_};
+      for (int i = 0; i < 3; ++i) {
+        row_[i] = axis[i];
+        splat(origin_[i], ray.origin_[axis[i]]);
       }
-      const F e_u = x[2] * y[1] - y[2] * x[1];
-      const F e_v = x[0] * y[2] - y[0] * x[2];
-      const F e_w = x[1] * y[0] - y[1] * x[0];
-      const F s = (F)((M)x[0] & INT32_MAX) + (F)((M)y[0] & INT32_MAX) + (F)((M)x[1] & INT32_MAX) +
-                  (F)((M)y[1] & INT32_MAX) + (F)((M)x[2] & INT32_MAX) + (F)((M)y[2] & INT32_MAX);
-      const F bound = s * (shear_error + u * s) + edge_constant;
-      const F minus_bound = -bound;
-      // Some function clearly negative and some clearly positive: the exact ones cannot share a sign.
-      const M negative = (e_u < minus_bound) | (e_v < minus_bound) | (e_w < minus_bound);
-      const M positive = (e_u > bound) | (e_v > bound) | (e_w > bound);
-      const F det = e_u + e_v + e_w;
-      const M edge_on = (F)((M)det & INT32_MAX) <= s * s * 0x1p-20f + 3 * bound;
-      const F near = z[0] < z[1] ? z[0] : z[1], far = z[0] < z[1] ? z[1] : z[0];
-      F lowest = z[2] < near ? z[2] : near, highest = z[2] < far ? far : z[2];
-      lowest -= (F)((M)lowest & INT32_MAX) * (2 * u) + depth_error;
-      highest += (F)((M)highest & INT32_MAX) * (2 * u) + depth_error;
-      const M beyond = (lowest > t_max) | (highest < t_min);
-      const M dropped = ((negative & positive) | beyond) & ~edge_on;
-      // Edge-on lanes may hit anywhere along the window.
-      const F low = (F)(((M)lowest & ~edge_on) | ((M)(t_min - F{}) & edge_on));
-      math::lanes::store(entry + first, low);
-      mask |= (~math::lanes::bits(dropped) & ((1u << L) - 1)) << first;
+      splat(shear_x_, ray.shear_x_);
+      splat(shear_y_, ray.shear_y_);
+      splat(depth_scale_, ray.depth_scale_);
     }
-    return mask & lanes;
-  }
+
+    /// TriangleRay::candidates.
+    SNELL_LANES_INLINE unsigned candidates(const TriangleBlock& b, float t_min, float t_max,
+                                           float (&entry)[TriangleBlock::kSize]) const {
+      const unsigned lanes = (1u << b.count) - 1;
+      if (!usable_) {
+        for (float& e : entry) e = -INFINITY;
+        return lanes;
+      }
+      using math::lanes::load;
+      using math::lanes::splat;
+      constexpr float u = 0x1p-24f;
+      const float r = b.magnitude + origin_magnitude_;
+      const float shear_error = 10 * u * r;
+      // The constant part of the edge function bound: 2 delta^2, and the double test's own error.
+      const float edge_constant = 2 * shear_error * shear_error + 0x1p-40f * r * b.longest_edge;
+      const float depth_error = 3.5f * u * r * depth_scale_magnitude_;
+      unsigned mask = 0;
+      for (int first = 0; first < TriangleBlock::kSize; first += L) {
+        F x[3], y[3], z[3];
+        for (int k = 0; k < 3; ++k) {
+          F px, py, pz;
+          load(px, b.v[k][row_[0]] + first);
+          load(py, b.v[k][row_[1]] + first);
+          load(pz, b.v[k][row_[2]] + first);
+          pz -= origin_[2];
+          x[k] = (px - origin_[0]) - shear_x_ * pz;
+          y[k] = (py - origin_[1]) - shear_y_ * pz;
+          z[k] = depth_scale_ * pz;
+        }
+        const F e_u = x[2] * y[1] - y[2] * x[1];
+        const F e_v = x[0] * y[2] - y[0] * x[2];
+        const F e_w = x[1] * y[0] - y[1] * x[0];
+        const F s = (F)((M)x[0] & INT32_MAX) + (F)((M)y[0] & INT32_MAX) + (F)((M)x[1] & INT32_MAX) +
+                    (F)((M)y[1] & INT32_MAX) + (F)((M)x[2] & INT32_MAX) + (F)((M)y[2] & INT32_MAX);
+        const F bound = s * (shear_error + u * s) + edge_constant;
+        const F minus_bound = -bound;
+        // Some function clearly negative and some clearly positive: the exact ones cannot share a sign.
+        const M negative = (e_u < minus_bound) | (e_v < minus_bound) | (e_w < minus_bound);
+        const M positive = (e_u > bound) | (e_v > bound) | (e_w > bound);
+        const F det = e_u + e_v + e_w;
+        const M edge_on = (F)((M)det & INT32_MAX) <= s * s * 0x1p-20f + 3 * bound;
+        const F near = z[0] < z[1] ? z[0] : z[1], far = z[0] < z[1] ? z[1] : z[0];
+        F lowest = z[2] < near ? z[2] : near, highest = z[2] < far ? far : z[2];
+        lowest -= (F)((M)lowest & INT32_MAX) * (2 * u) + depth_error;
+        highest += (F)((M)highest & INT32_MAX) * (2 * u) + depth_error;
+        const M beyond = (lowest > t_max) | (highest < t_min);
+        const M dropped = ((negative & positive) | beyond) & ~edge_on;
+        // Edge-on lanes may hit anywhere along the window.
+        const F low = (F)(((M)lowest & ~edge_on) | ((M)(t_min - F{}) & edge_on));
+        math::lanes::store(entry + first, low);
+        mask |= (~math::lanes::bits(dropped) & ((1u << L) - 1)) << first;
+      }
+      return mask & lanes;
+    }
+
+   private:
+    /// The rows of the ray's sheared x, y and its z axis, and the origin in those rows.
+    int row_[3];
+    F origin_[3];
+    F shear_x_, shear_y_, depth_scale_;
+    float origin_magnitude_, depth_scale_magnitude_;
+    bool usable_;
+  };
 
  private:
   float origin_[3] = {};

@@ -24,12 +24,12 @@ class TriangleTree {
   /// lower t_max. L lanes per instruction (math/float_lanes.hpp).
   template <int L, class Visit>
   SNELL_LANES_INLINE void walk(const math::Ray& ray, double t_min, double t_max, Visit&& visit) const {
-    const TriangleRay triangle_ray(ray);
+    const TriangleRay::Lanes<L> triangle_ray{TriangleRay(ray)};
     const float low = float_below(t_min);
     const auto leaf = [&](uint32_t block, uint32_t, double& t) __attribute__((always_inline)) {
       const TriangleBlock& b = blocks_[block];
       float entry[TriangleBlock::kSize];
-      for (unsigned m = triangle_ray.candidates<L>(b, low, float_above(t), entry); m != 0; m &= m - 1) {
+      for (unsigned m = triangle_ray.candidates(b, low, float_above(t), entry); m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > t) continue;
         visit(b.id[lane], t);

@@ -177,8 +177,8 @@ class WideBvhBuilder {
     for (int k = 0; k < WideBvh::kWidth; ++k) {
       const FloatBox box = k < n ? FloatBox(binary_[members[k]].box) : FloatBox::nothing();
       for (int a = 0; a < 3; ++a) {
-        node.lo[a][k] = box.lo[a];
-        node.hi[a][k] = box.hi[a];
+        node.planes[a][k] = box.lo[a];
+        node.planes[3 + a][k] = box.hi[a];
       }
       node.child[k] = WideBvh::kNoChild;
       node.count[k] = 0;

@@ -35,8 +35,8 @@ class WideBvh {
   /// precision, conservatively (float_slabs.hpp). Unused slots hold FloatBox::nothing(), which no ray enters.
   static constexpr int kWidth = 8;
   struct alignas(64) Node {
-    float lo[3][kWidth];
-    float hi[3][kWidth];
+    /// Child k's box: rows 0-2 its lo x, y, z, rows 3-5 its hi (so a ray picks its near and far rows once).
+    float planes[6][kWidth];
     /// Interior child: its node index, count 0. Leaf child: its label (by default the first primitive
     /// in the leaf order), count > 0. Unused slot: kNoChild, count 0.
     uint32_t child[kWidth];
@@ -90,11 +90,12 @@ class WideBvh {
     // A root node's children are tested by the walk itself; only a root leaf needs its box tested here.
     double entry = t_min, exit;
     if (root_count_ > 0 && !RayBox(ray).enter(root_box_, t_min, t_max, entry, exit)) return 0;
-    // Single precision where the ray allows it (half the arithmetic of the double test, L boxes per
-    // instruction), else double.
+    // Single precision where the ray and window allow it (half the arithmetic of the double test, L boxes
+    // per instruction), else double.
     const FloatSlabs float_slabs(ray);
-    return float_slabs.usable() ? walk_with<L>(float_slabs, entry, t_min, t_max, leaf, prefetch_leaf)
-                                : walk_with<L>(DoubleSlabs(ray), entry, t_min, t_max, leaf, prefetch_leaf);
+    return float_slabs.usable() && t_min >= 0
+               ? walk_with<L>(float_slabs, entry, t_min, t_max, leaf, prefetch_leaf)
+               : walk_with<L>(DoubleSlabs(ray), entry, t_min, t_max, leaf, prefetch_leaf);
   }
 
  private:
@@ -114,8 +115,9 @@ class WideBvh {
                                       Leaf& leaf, PrefetchLeaf& prefetch_leaf) const {
     using Real = typename Slabs::Real;
     /// A subtree waiting to be walked: a node (count 0) or a leaf (count > 0), entered at `entry`. No
-    /// default member initialisers: the stack of these must cost nothing to create.
-    struct Pending {
+    /// default member initialisers: the stack of these must cost nothing to create. 16 bytes, so that an
+    /// entry's address is one shift of its index.
+    struct alignas(16) Pending {
       uint32_t index;
       uint32_t count;
       Real entry;
@@ -142,7 +144,7 @@ class WideBvh {
       }
       const Node& node = nodes_[p.index];
       Real entry[kWidth];
-      int mask = lanes.test(node.lo, node.hi, entry);
+      int mask = lanes.test(node.planes, entry);
       // The children hit are sorted straight onto the stack, farthest first (insertion by decreasing
       // entry).
       Pending* hits = stack.data() + top;
