@@ -1,7 +1,7 @@
 #pragma once
 // Property checks every shape must pass, with rays whose answers follow from the shape's definition alone:
-// hits lie in the bounds, come sorted, `intersect` agrees with the first of `all_hits`, scaling the
-// direction divides t, normals are usable and (for solids) point from inside to outside.
+// hits lie in the bounds, come sorted, `intersect` agrees with the first of `all_hits` and with `crosses`,
+// scaling the direction divides t, normals are usable and (for solids) point from inside to outside.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,7 +42,11 @@ inline void check_random_rays(const Shape& shape, bool solid, int count = 2000, 
     LocalHit first;
     const bool any = shape.intersect(ray, 1e-9, math::kInfinity, first);
     ASSERT_EQ(any, !hits.empty());
+    // crosses (shadow rays) agrees with intersect, also in windows that end just short of the first hit.
+    EXPECT_EQ(shape.crosses(ray, 1e-9, math::kInfinity), any);
     if (!any) continue;
+    EXPECT_FALSE(shape.crosses(ray, 1e-9, first.t * (1 - 1e-6)));
+    EXPECT_TRUE(shape.crosses(ray, 1e-9, first.t * (1 + 1e-6)));
     ++hit_rays;
     EXPECT_DOUBLE_EQ(first.t, hits[0].t);
     for (size_t k = 0; k < hits.size(); ++k) {

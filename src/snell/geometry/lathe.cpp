@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "snell/geometry/any_crossing.hpp"
 #include "snell/geometry/axial_ray.hpp"
 #include "snell/geometry/polynomial.hpp"
 
@@ -133,6 +134,10 @@ LocalHit Lathe::make_hit(const Ray& ray, const Crossing& c) const {
   hit.normal = n;
   hit.uv = {0.5 + std::atan2(p.z, p.x) * 0.5 * math::kInvPi, c.s};
   return hit;
+}
+
+bool Lathe::crosses(const Ray& ray, double t_min, double t_max) const {
+  return any_crossing(t_max, [&](const double& limit, auto&& emit) { crossings(ray, t_min, limit, emit); });
 }
 
 bool Lathe::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "snell/geometry/any_crossing.hpp"
 #include "snell/math/constants.hpp"
 
 namespace snell::geometry {
@@ -32,21 +33,28 @@ Bounds3 Prism::bounds() const {
 
 template <typename F>
 void Prism::crossings(const Ray& local, double t_min, const double& t_max, F&& emit) const {
+  // Walls first: a cap costs an outline containment test, skipped once a nearer wall crossing has
+  // lowered t_max (or once a shadow ray has found one).
+  wall_crossings(local, t_min, t_max, emit);
+  if (open_ || local.direction.y == 0) return;
+  const Vec3 o = local.origin, d = local.direction;
+  // Caps: the planes y = h1 and y = h2, inside the outline (scaled by the height for a conic sweep).
+  for (const int cap : {-1, -2}) {
+    const double h = cap == -1 ? h1_ : h2_;
+    const double scale = sweep_ == Sweep::conic ? h : 1.0;
+    if (scale == 0) continue;
+    const double t = (h - o.y) / d.y;
+    if (!(t > t_min && t < t_max)) continue;
+    if (outline_.contains({(o.x + t * d.x) / scale, (o.z + t * d.z) / scale})) emit(Crossing{t, cap, 0});
+  }
+}
+
+template <typename F>
+void Prism::wall_crossings(const Ray& local, double t_min, const double& t_max, F&& emit) const {
   const Vec3 o = local.origin, d = local.direction;
   const auto accept = [&](double t, int piece, double s) {
     if (t > t_min && t < t_max) emit(Crossing{t, piece, s});
   };
-  // Caps: the planes y = h1 and y = h2, inside the outline (scaled by the height for a conic sweep).
-  if (!open_ && d.y != 0) {
-    for (const int cap : {-1, -2}) {
-      const double h = cap == -1 ? h1_ : h2_;
-      const double scale = sweep_ == Sweep::conic ? h : 1.0;
-      if (scale == 0) continue;
-      const double t = (h - o.y) / d.y;
-      if (!(t > t_min && t < t_max)) continue;
-      if (outline_.contains({(o.x + t * d.x) / scale, (o.z + t * d.z) / scale})) accept(t, cap, 0);
-    }
-  }
   // Walls: the line of the outline plane that the ray's sweep plane cuts.
   Vec2 n;
   double k;
@@ -160,6 +168,11 @@ bool Prism::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit)
   });
   if (found) hit = make_hit(local, best);
   return found;
+}
+
+bool Prism::crosses(const Ray& ray, double t_min, double t_max) const {
+  const Ray local{to_local(ray.origin), to_local(ray.direction), ray.time};
+  return any_crossing(t_max, [&](const double& limit, auto&& emit) { crossings(local, t_min, limit, emit); });
 }
 
 void Prism::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {

@@ -18,6 +18,8 @@ class Prism final : public Shape {
 
   Bounds3 bounds() const override;
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  /// Stops at the first crossing and builds no hit (shadow rays).
+  bool crosses(const Ray& ray, double t_min, double t_max) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override;
   std::string_view kind() const override { return outline_in_xy_ ? "text" : "prism"; }
@@ -29,8 +31,11 @@ class Prism final : public Shape {
     int piece;
     double s;
   };
+  /// Emits the crossings in (t_min, t_max), walls before caps; `emit` may lower t_max as it goes.
   template <typename F>
   void crossings(const Ray& local, double t_min, const double& t_max, F&& emit) const;
+  template <typename F>
+  void wall_crossings(const Ray& local, double t_min, const double& t_max, F&& emit) const;
   LocalHit make_hit(const Ray& local, const Crossing& c) const;
   bool inside_local(const Vec3& p) const;
   /// Swaps y and z for text; the identity for prisms. Its own inverse.

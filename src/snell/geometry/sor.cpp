@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "snell/geometry/any_crossing.hpp"
 #include "snell/geometry/axial_ray.hpp"
 #include "snell/geometry/outline.hpp"
 #include "snell/geometry/polynomial.hpp"
@@ -124,6 +125,10 @@ void Sor::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit)
     const double r2 = top ? evaluate_polynomial(pieces_.back().c, 1) : pieces_.front().c[0];
     if (a * u * u + b * u + c <= r2) accept(u, Vec3(0, top ? 1 : -1, 0), -1);
   }
+}
+
+bool Sor::crosses(const Ray& ray, double t_min, double t_max) const {
+  return any_crossing(t_max, [&](const double& limit, auto&& emit) { crossings(ray, t_min, limit, emit); });
 }
 
 bool Sor::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {

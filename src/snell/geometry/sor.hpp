@@ -17,6 +17,8 @@ class Sor final : public Shape {
 
   Bounds3 bounds() const override;
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  /// Stops at the first crossing and builds no hit (shadow rays).
+  bool crosses(const Ray& ray, double t_min, double t_max) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override;
   bool inside_within_bounds() const override { return true; }

@@ -1,5 +1,6 @@
 #include "snell/geometry/torus.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -34,7 +35,7 @@ LocalHit Torus::make_hit(const Vec3& p, double t) const {
   return h;
 }
 
-bool Torus::gather(const Ray& ray, HitBuffer<4>& hits, int max_roots) const {
+bool Torus::quartic_along(const Ray& ray, double t_min, double t_max, Quartic& q) const {
   // Work with a unit direction and an origin moved to the ray's closest approach to the centre: the
   // quartic's coefficients then stay of the torus' size however far away the ray starts. A point of the
   // ray is o + u dn with u = f + t |d|.
@@ -47,8 +48,8 @@ bool Torus::gather(const Ray& ray, HitBuffer<4>& hits, int max_roots) const {
   const double c2 = rb * rb - length_squared(o);
   if (c2 < 0) return false;
   const double half = std::sqrt(c2);
-  double u_lo = std::max(-half * 1.000001, f + hits.t_min() * dl);
-  double u_hi = std::min(half * 1.000001, f + hits.t_max() * dl);
+  double u_lo = std::max(-half * 1.000001, f + t_min * dl);
+  double u_hi = std::min(half * 1.000001, f + t_max * dl);
   if (!(u_lo < u_hi)) return false;
   // The torus lies within the slab |y| <= minor and the cylinder x^2 + z^2 <= (major + minor)^2 (POV-Ray
   // also tests a bounding cylinder first): the part of the window inside both is all the quartic needs,
@@ -73,20 +74,40 @@ bool Torus::gather(const Ray& ray, HitBuffer<4>& hits, int max_roots) const {
     u_hi = std::min(u_hi, (-b + root) / radial);
   }
   if (!(u_lo < u_hi)) return false;
+  q = {o, dn, f, dl, u_lo, u_hi, torus_quartic(o, dn, major_, minor_)};
+  return true;
+}
 
-  const std::array<double, 5> coeffs = torus_quartic(o, dn, major_, minor_);
+bool Torus::gather(const Ray& ray, HitBuffer<4>& hits, int max_roots) const {
+  Quartic q;
+  if (!quartic_along(ray, hits.t_min(), hits.t_max(), q)) return false;
   std::array<double, 4> roots{};
-  const int n = real_roots(coeffs, u_lo, u_hi, roots, max_roots);
+  const int n = real_roots(q.coeffs, q.u_lo, q.u_hi, roots, max_roots);
   bool refused = false;
   for (int i = 0; i < n; ++i) {
-    const double t = (roots[i] - f) / dl;
+    const double t = (roots[i] - q.f) / q.dl;
     if (hits.accepts(t)) {
-      hits.add(make_hit(o + roots[i] * dn, t));
+      hits.add(make_hit(q.o + roots[i] * q.dn, t));
     } else {
       refused = true;
     }
   }
   return refused;
+}
+
+bool Torus::crosses(const Ray& ray, double t_min, double t_max) const {
+  Quartic q;
+  if (!quartic_along(ray, t_min, t_max, q)) return false;
+  // As intersect: the smallest root first, all of them should rounding put its t outside the window.
+  std::array<double, 4> roots{};
+  const auto accepted = [&](double u) {
+    const double t = (u - q.f) / q.dl;
+    return t > t_min && t < t_max;
+  };
+  if (real_roots(q.coeffs, q.u_lo, q.u_hi, roots, 1) == 0) return false;
+  if (accepted(roots[0])) return true;
+  const int n = real_roots(q.coeffs, q.u_lo, q.u_hi, roots);
+  return std::any_of(roots.begin(), roots.begin() + n, accepted);
 }
 
 bool Torus::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
