@@ -95,3 +95,37 @@ TEST(PovRayNoise, LanesEqualOnePointCalls) {
 }
 
 }  // namespace
+
+namespace {
+
+using snell::texture::povray_dnoise_scaled;
+using snell::texture::povray_noise_scaled;
+
+/// The octave batches (used by turbulence, granite and wrinkles) equal one-point calls bit for bit, for
+/// counts below, at and above the lane count, points near and far from the origin and on lattice planes.
+TEST(PovRayNoise, ScaledBatchesEqualOnePointCalls) {
+  const Vec3 points[] = {{0.3, 0.7, 1.1}, {-3.0, 2.0, -5e-11}, {1234.5, -987.25, 0.001}, {-0.2, -0.4, 7.9}};
+  double scales[13];
+  double f = 1;
+  for (double& s : scales) s = f, f *= 2.25;
+  for (const Vec3& p : points)
+    for (int count : {1, 6, 8, 9, 13}) {
+      for (NoiseGenerator g :
+           {NoiseGenerator::original, NoiseGenerator::range_corrected, NoiseGenerator::perlin}) {
+        double out[13];
+        povray_noise_scaled(p, scales, count, out, g);
+        for (int i = 0; i < count; ++i) {
+          const double one = povray_noise(p * scales[i], g);
+          EXPECT_EQ(std::memcmp(&out[i], &one, sizeof one), 0) << "octave " << i << " of " << count;
+        }
+      }
+      Vec3 vout[13];
+      povray_dnoise_scaled(p, scales, count, vout);
+      for (int i = 0; i < count; ++i) {
+        const Vec3 one = povray_dnoise(p * scales[i]);
+        EXPECT_EQ(std::memcmp(&vout[i], &one, sizeof one), 0) << "octave " << i << " of " << count;
+      }
+    }
+}
+
+}  // namespace

@@ -72,7 +72,8 @@ class Csg {
   math::Bounds3 clip_bounds_;
   std::vector<math::Bounds3> child_clip_bounds_;
   /// Per child, a padded box outside which its inside() is just its `inverse` flag (plain shapes that
-  /// say inside_within_bounds); infinite for the others. keeps() asks it before the child's own test:
+  /// say inside_within_bounds, and CSG children all of whose leaves do: their solid bounds); infinite
+  /// for the others. keeps() asks it before the child's own test:
   /// most points of a difference lie far from most of what is cut away.
   std::vector<math::Bounds3> inside_boxes_;
   /// children_[j]->inside(p, time), answered by inside_boxes_[j] where it can.

@@ -40,12 +40,16 @@ double AgatePattern::value(const Vec3& p) const {
 }
 
 double GranitePattern::value(const Vec3& p) const {
-  // POV-Ray's granite (pattern.cpp): six octaves; generator 1 takes |0.5 - noise|, generators 2 and 3
-  // |1 - 2 noise| capped at 0.5.
+  // POV-Ray's granite (pattern.cpp): six octaves at 4 times 1, 2, .., 32; generator 1 takes |0.5 - noise|,
+  // generators 2 and 3 |1 - 2 noise| capped at 0.5. The six noises are computed together.
   const NoiseGenerator generator = noise_.get();
+  constexpr int kOctaves = 6;
+  static constexpr double kScales[kOctaves] = {4, 8, 16, 32, 64, 128};
+  double noise[kOctaves];
+  povray_noise_scaled(p, kScales, kOctaves, noise, generator);
   double sum = 0, frequency = 1;
-  for (int i = 0; i < 6; ++i, frequency *= 2) {
-    const double n = povray_noise(p * (4.0 * frequency), generator);
+  for (int i = 0; i < kOctaves; ++i, frequency *= 2) {
+    const double n = noise[i];
     const double octave =
         generator == NoiseGenerator::original ? std::fabs(0.5 - n) : std::min(std::fabs(1.0 - 2.0 * n), 0.5);
     sum += octave / frequency;
@@ -55,11 +59,15 @@ double GranitePattern::value(const Vec3& p) const {
 
 double WrinklesPattern::value(const Vec3& p) const {
   // POV-Ray's wrinkles (pattern.cpp): ten octaves of the noise as it is (generator 1) or of 2 noise - 0.5
-  // clamped to [0, 1] (generators 2 and 3).
+  // clamped to [0, 1] (generators 2 and 3), at frequencies 1, 2, .., 512, computed together.
   const NoiseGenerator generator = noise_.get();
-  double sum = 0, amplitude = 1, frequency = 1;
-  for (int i = 0; i < 10; ++i, amplitude *= 0.5, frequency *= 2) {
-    const double n = povray_noise(p * frequency, generator);
+  constexpr int kOctaves = 10;
+  static constexpr double kScales[kOctaves] = {1, 2, 4, 8, 16, 32, 64, 128, 256, 512};
+  double noise[kOctaves];
+  povray_noise_scaled(p, kScales, kOctaves, noise, generator);
+  double sum = 0, amplitude = 1;
+  for (int i = 0; i < kOctaves; ++i, amplitude *= 0.5) {
+    const double n = noise[i];
     sum += amplitude * (generator == NoiseGenerator::original ? n : std::clamp(2.0 * n - 0.5, 0.0, 1.0));
   }
   return sum / 2;

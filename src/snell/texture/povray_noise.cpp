@@ -118,11 +118,6 @@ double s_curve(double t) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-#if defined(__x86_64__) && defined(__GNUC__)
-[[gnu::target("avx2")]] void lattice_noise_avx2(const double* x, const double* y, const double* z,
-                                                double* out);
-#endif
-
 /// One axis of the lattice: the cell (offset by 10000 and wrapped to 12 bits) and the position in it.
 /// POV-Ray rounds negative coordinates within 1e-10 of an integer up to it ("JB fix").
 struct LatticeAxis {
@@ -182,11 +177,13 @@ double lattice_noise(const Vec3& p) {
 }
 
 /// The lattice coefficients of corner index k as lattice_noise reads them, one row of four per index: half
-/// the first (the halving is exact, so it is done once here), then the three slopes.
+/// the first (the halving is exact, so it is done once here), then the three slopes. Rows go up to index
+/// 263 because DNoise's third component reads 8 entries further along than the noise (povray_dnoise).
 struct CornerCoefficients {
-  alignas(32) std::array<std::array<double, 4>, 256> rows;
+  static constexpr int kRows = 256 + 8;
+  alignas(32) std::array<std::array<double, 4>, kRows> rows;
   CornerCoefficients() {
-    for (int k = 0; k < 256; ++k)
+    for (int k = 0; k < kRows; ++k)
       rows[k] = {0.5 * kCoefficients[k], kCoefficients[k + 1], kCoefficients[k + 2], kCoefficients[k + 3]};
   }
 };
@@ -196,13 +193,16 @@ const CornerCoefficients& corner_coefficients() {
   return c;
 }
 
-/// Component j of the rows rows[index[l]] for the W lanes l: out[j][l].
+/// Component j of the rows rows[index[l] + shift] for the W lanes l: out[j][l].
 template <int W, typename V>
-SNELL_SIMD_INLINE void gather_rows(const CornerCoefficients& c, const unsigned* index, V (&out)[4]) {
+SNELL_SIMD_INLINE void gather_rows(const CornerCoefficients& c, const unsigned* index, unsigned shift,
+                                   V (&out)[4]) {
   if constexpr (W == 4) {
     // Four rows, transposed.
-    const V r0 = simd::load<V>(c.rows[index[0]].data()), r1 = simd::load<V>(c.rows[index[1]].data()),
-            r2 = simd::load<V>(c.rows[index[2]].data()), r3 = simd::load<V>(c.rows[index[3]].data());
+    const V r0 = simd::load<V>(c.rows[index[0] + shift].data()),
+            r1 = simd::load<V>(c.rows[index[1] + shift].data()),
+            r2 = simd::load<V>(c.rows[index[2] + shift].data()),
+            r3 = simd::load<V>(c.rows[index[3] + shift].data());
     using M = typename simd::Vec<W>::M;
     const V a = __builtin_shuffle(r0, r1, M{0, 4, 2, 6}), b = __builtin_shuffle(r0, r1, M{1, 5, 3, 7});
     const V e = __builtin_shuffle(r2, r3, M{0, 4, 2, 6}), f = __builtin_shuffle(r2, r3, M{1, 5, 3, 7});
@@ -214,18 +214,20 @@ SNELL_SIMD_INLINE void gather_rows(const CornerCoefficients& c, const unsigned* 
     // Two rows, each as two halves, transposed.
     using M = typename simd::Vec<W>::M;
     for (int half = 0; half < 2; ++half) {
-      const V r0 = simd::load<V>(c.rows[index[0]].data() + 2 * half),
-              r1 = simd::load<V>(c.rows[index[1]].data() + 2 * half);
+      const V r0 = simd::load<V>(c.rows[index[0] + shift].data() + 2 * half),
+              r1 = simd::load<V>(c.rows[index[1] + shift].data() + 2 * half);
       out[2 * half] = __builtin_shuffle(r0, r1, M{0, 2});
       out[2 * half + 1] = __builtin_shuffle(r0, r1, M{1, 3});
     }
   }
 }
 
-/// lattice_noise at the W points p[0..2][0..W): the same operations in the same order on vectors of W
-/// points (math/simd.hpp), the table look-ups point by point.
-template <int W>
-SNELL_SIMD_INLINE void lattice_noise_chunk(const double* const* p, double* out) {
+/// The lattice sums at the W points p[0..2][0..W): with Components = 1 lattice_noise, with 3 the three
+/// components of povray_dnoise (component a reads its coefficients 4 a entries along). The same operations
+/// in the same order as the scalar code on vectors of W points (math/simd.hpp), the table look-ups point
+/// by point.
+template <int W, int Components>
+SNELL_SIMD_INLINE void lattice_sums_chunk(const double* const* p, double* const* out) {
   using V = typename simd::Vec<W>::V;
   using M = typename simd::Vec<W>::M;
   using I = typename simd::Vec<W>::I;
@@ -257,43 +259,53 @@ SNELL_SIMD_INLINE void lattice_noise_chunk(const double* const* p, double* out) 
   const CornerCoefficients& k = corner_coefficients();
   const V one_minus[3] = {1.0 - s[0], 1.0 - s[1], 1.0 - s[2]};
   const V offset_minus[3] = {offset[0] - 1.0, offset[1] - 1.0, offset[2] - 1.0};
-  V sum = zero;
+  V sum[Components] = {};
   for (int corner = 0; corner < 8; ++corner) {
     const int dx = corner & 1, dy = (corner >> 1) & 1, dz = corner >> 2;
     const V weight = (dx ? s[0] : one_minus[0]) * (dy ? s[1] : one_minus[1]) * (dz ? s[2] : one_minus[2]);
-    V c[4];
-    gather_rows<W>(k, index[corner], c);
-    // value_term
-    const V term = c[0] + c[1] * (dx ? offset_minus[0] : offset[0]) +
-                   c[2] * (dy ? offset_minus[1] : offset[1]) + c[3] * (dz ? offset_minus[2] : offset[2]);
-    sum += weight * term;
+    for (int a = 0; a < Components; ++a) {
+      V c[4];
+      gather_rows<W>(k, index[corner], 4 * a, c);
+      // value_term
+      const V term = c[0] + c[1] * (dx ? offset_minus[0] : offset[0]) +
+                     c[2] * (dy ? offset_minus[1] : offset[1]) + c[3] * (dz ? offset_minus[2] : offset[2]);
+      sum[a] += weight * term;
+    }
   }
-  simd::store(out, sum);
+  for (int a = 0; a < Components; ++a) simd::store(out[a], sum[a]);
 }
 
-template <int W>
-SNELL_SIMD_INLINE void lattice_noise_all(const double* x, const double* y, const double* z, double* out) {
-  for (int l = 0; l < kNoiseLanes; l += W) {
+/// lattice_sums_chunk over the first `count` of kNoiseLanes points, whole chunks of W (the inputs are
+/// read up to the next multiple of W, so all kNoiseLanes entries must be set).
+template <int W, int Components>
+SNELL_SIMD_INLINE void lattice_sums_all(const double* x, const double* y, const double* z, double* const* out,
+                                        int count) {
+  for (int l = 0; l < count; l += W) {
     const double* const p[3] = {x + l, y + l, z + l};
-    lattice_noise_chunk<W>(p, out + l);
+    double* o[Components];
+    for (int a = 0; a < Components; ++a) o[a] = out[a] + l;
+    lattice_sums_chunk<W, Components>(p, o);
   }
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-[[gnu::target("avx2")]] void lattice_noise_avx2(const double* x, const double* y, const double* z,
-                                                double* out) {
-  lattice_noise_all<4>(x, y, z, out);
+template <int Components>
+[[gnu::target("avx2")]] void lattice_sums_avx2(const double* x, const double* y, const double* z,
+                                               double* const* out, int count) {
+  lattice_sums_all<4, Components>(x, y, z, out, count);
 }
 #endif
 
-/// lattice_noise at kNoiseLanes points. Built for plain x86-64 and for AVX2 (twice the width), picked when
-/// the program starts; both give the scalar code's bits.
-void lattice_noise_lanes(const double* x, const double* y, const double* z, double* out) {
+/// lattice_sums_chunk at the first `count` of kNoiseLanes points. Built for plain x86-64 and for AVX2
+/// (twice the width), picked when the program starts; both give the scalar code's bits.
+template <int Components>
+void lattice_sums_lanes(const double* x, const double* y, const double* z, double* const* out,
+                        int count = kNoiseLanes) {
 #if defined(__x86_64__) && defined(__GNUC__)
   static const bool avx2 = math::has_avx2();
-  if (avx2) return lattice_noise_avx2(x, y, z, out);
+  if (avx2) return lattice_sums_avx2<Components>(x, y, z, out, count);
 #endif
-  lattice_noise_all<2>(x, y, z, out);
+  lattice_sums_all<2, Components>(x, y, z, out, count);
 }
 
 /// Perlin's 1985 noise ("SolidNoise"), about [-1, 1]; POV-Ray shifts coordinates by a large
@@ -332,12 +344,6 @@ double lattice_to_unit(double sum, NoiseGenerator generator) {
   // Range corrected: POV-Ray's measured range of the raw sum, [-1.05242, 0.988997], mapped onto [0, 1].
   const double n = generator == NoiseGenerator::range_corrected ? (sum + 1.05242) * 0.48985582 : sum + 0.5;
   return std::clamp(n, 0.0, 1.0);
-}
-
-/// One octave of scalar turbulence as POV-Ray weighs it for each generator.
-double turbulence_octave(const Vec3& p, NoiseGenerator generator) {
-  const double n = povray_noise(p, generator);
-  return generator == NoiseGenerator::original ? n : 2.0 * n - 0.5;
 }
 
 /// DNoise's coefficient rows of corner index k with the three components side by side: term j of
@@ -398,8 +404,52 @@ void povray_noise_lanes(const double* x, const double* y, const double* z, doubl
     for (int l = 0; l < kNoiseLanes; ++l) out[l] = povray_noise({x[l], y[l], z[l]}, generator);
     return;
   }
-  lattice_noise_lanes(x, y, z, out);
+  double* const sums[1] = {out};
+  lattice_sums_lanes<1>(x, y, z, sums);
   for (int l = 0; l < kNoiseLanes; ++l) out[l] = lattice_to_unit(out[l], generator);
+}
+
+namespace {
+
+/// The points p * scales[i] for i < count (count <= kNoiseLanes) as three coordinate rows, the rest of
+/// the kNoiseLanes lanes zero.
+struct ScaledPoints {
+  alignas(32) double x[kNoiseLanes] = {}, y[kNoiseLanes] = {}, z[kNoiseLanes] = {};
+  ScaledPoints(const Vec3& p, const double* scales, int count) {
+    for (int i = 0; i < count; ++i) {
+      const Vec3 q = p * scales[i];
+      x[i] = q.x, y[i] = q.y, z[i] = q.z;
+    }
+  }
+};
+
+}  // namespace
+
+void povray_noise_scaled(const Vec3& p, const double* scales, int count, double* out,
+                         NoiseGenerator generator) {
+  for (int first = 0; first < count; first += kNoiseLanes) {
+    const int n = std::min(kNoiseLanes, count - first);
+    if (generator == NoiseGenerator::perlin) {
+      for (int i = 0; i < n; ++i) out[first + i] = povray_noise(p * scales[first + i], generator);
+      continue;
+    }
+    const ScaledPoints points(p, scales + first, n);
+    alignas(32) double sums[kNoiseLanes];
+    double* const rows[1] = {sums};
+    lattice_sums_lanes<1>(points.x, points.y, points.z, rows, n);
+    for (int i = 0; i < n; ++i) out[first + i] = lattice_to_unit(sums[i], generator);
+  }
+}
+
+void povray_dnoise_scaled(const Vec3& p, const double* scales, int count, Vec3* out) {
+  for (int first = 0; first < count; first += kNoiseLanes) {
+    const int n = std::min(kNoiseLanes, count - first);
+    const ScaledPoints points(p, scales + first, n);
+    alignas(32) double sums[3][kNoiseLanes];
+    double* const rows[3] = {sums[0], sums[1], sums[2]};
+    lattice_sums_lanes<3>(points.x, points.y, points.z, rows, n);
+    for (int i = 0; i < n; ++i) out[first + i] = Vec3{sums[0][i], sums[1][i], sums[2][i]};
+  }
 }
 
 int povray_hash3d(int x, int y, int z) {
@@ -452,19 +502,46 @@ Vec3 povray_dnoise(const Vec3& p) {
 }
 
 double povray_turbulence(const Vec3& p, int octaves, double lambda, double omega, NoiseGenerator generator) {
-  double value = povray_noise(p, generator);
-  if (generator != NoiseGenerator::original) value = std::clamp(2.0 * value - 0.5, 0.0, 1.0);
-  double frequency = lambda, weight = omega;
-  for (int i = 2; i <= octaves; ++i, frequency *= lambda, weight *= omega)
-    value += weight * turbulence_octave(p * frequency, generator);
+  // Octave i (from 1) is the noise at p times lambda^(i-1), weighted by omega^(i-1); the first is kept as
+  // it is. The powers are built by the same running products as POV-Ray's loop, so the sum has its bits.
+  double value = 0, frequency = 1, weight = 1;
+  const int total = std::max(octaves, 1);
+  for (int first = 1; first <= total; first += kNoiseLanes) {
+    const int n = std::min(kNoiseLanes, total - first + 1);
+    double scales[kNoiseLanes], weights[kNoiseLanes], noise[kNoiseLanes];
+    for (int i = 0; i < n; ++i, frequency *= lambda, weight *= omega)
+      scales[i] = frequency, weights[i] = weight;
+    povray_noise_scaled(p, scales, n, noise, generator);
+    for (int i = 0; i < n; ++i) {
+      const double v = noise[i];
+      if (first + i == 1)
+        value = generator == NoiseGenerator::original ? v : std::clamp(2.0 * v - 0.5, 0.0, 1.0);
+      else
+        value += weights[i] * (generator == NoiseGenerator::original ? v : 2.0 * v - 0.5);
+    }
+  }
   return value;
 }
 
 Vec3 povray_vector_turbulence(const Vec3& p, int octaves, double lambda, double omega) {
-  Vec3 sum = povray_dnoise(p);
-  double frequency = lambda, weight = omega;
-  for (int i = 2; i <= octaves; ++i, frequency *= lambda, weight *= omega)
-    sum += povray_dnoise(p * frequency) * weight;
+  // As povray_turbulence: octave i at p times lambda^(i-1), weighted by omega^(i-1), the first unweighted.
+  Vec3 sum{0, 0, 0};
+  double frequency = 1, weight = 1;
+  const int total = std::max(octaves, 1);
+  for (int first = 1; first <= total; first += kNoiseLanes) {
+    const int n = std::min(kNoiseLanes, total - first + 1);
+    double scales[kNoiseLanes], weights[kNoiseLanes];
+    Vec3 noise[kNoiseLanes];
+    for (int i = 0; i < n; ++i, frequency *= lambda, weight *= omega)
+      scales[i] = frequency, weights[i] = weight;
+    povray_dnoise_scaled(p, scales, n, noise);
+    for (int i = 0; i < n; ++i) {
+      if (first + i == 1)
+        sum = noise[i];
+      else
+        sum += noise[i] * weights[i];
+    }
+  }
   return sum;
 }
 

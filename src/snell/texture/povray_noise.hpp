@@ -59,6 +59,15 @@ inline constexpr int kNoiseLanes = 8;
 void povray_noise_lanes(const double* x, const double* y, const double* z, double* out,
                         NoiseGenerator generator = kDefaultNoiseGenerator);
 
+/// povray_noise at the points p * scales[i] for i < count, into out[i] (the octaves of a fractal sum),
+/// computed kNoiseLanes points at a time; the same values as one call per point.
+void povray_noise_scaled(const math::Vec3& p, const double* scales, int count, double* out,
+                         NoiseGenerator generator = kDefaultNoiseGenerator);
+
+/// povray_dnoise at the points p * scales[i] for i < count, into out[i], kNoiseLanes points at a time;
+/// the same values as one call per point.
+void povray_dnoise_scaled(const math::Vec3& p, const double* scales, int count, math::Vec3* out);
+
 /// POV-Ray's DNoise(): a vector whose components lie in about [-1, 1] (same for every generator).
 math::Vec3 povray_dnoise(const math::Vec3& p);
 
