@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "snell/geometry/surface_uv.hpp"
 #include "snell/math/constants.hpp"
 
 namespace snell::geometry {
@@ -41,7 +42,9 @@ LocalHit Sphere::make_hit(const Ray& ray, double t) const {
   LocalHit hit;
   hit.t = t;
   hit.normal = (ray.at(t) - center_) / radius_;
-  // Spherical uv as POV-Ray's uv_mapping for spheres: u around y, v from south to north pole.
+  // Spherical uv as POV-Ray's uv_mapping for spheres: u around y, v from south to north pole; only when
+  // something reads uv (surface_uv.hpp).
+  if (!surface_uv_requested()) return hit;
   const Vec3& n = hit.normal;
   hit.uv = {0.5 + std::atan2(n.x, n.z) * 0.5 * math::kInvPi,
             0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) * math::kInvPi};

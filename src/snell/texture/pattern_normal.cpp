@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "snell/geometry/surface_uv.hpp"
 #include "snell/texture/map_bracket.hpp"
 
 namespace snell::texture {
@@ -56,6 +57,7 @@ double SlopeMap::height(double value) const {
 }
 
 PatternNormal::PatternNormal(NormalSpec spec) : spec_(std::move(spec)) {
+  if (spec_.uv_mapping) geometry::request_surface_uv();
   if (!spec_.pattern) throw std::invalid_argument("a normal needs a pattern");
   if (!(spec_.accuracy > 0)) throw std::invalid_argument("accuracy must be positive");
   std::stable_sort(spec_.normal_map.begin(), spec_.normal_map.end(),

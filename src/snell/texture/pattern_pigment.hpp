@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "snell/geometry/surface_uv.hpp"
 #include "snell/material/pigment.hpp"
 #include "snell/math/transform.hpp"
 #include "snell/texture/color_map.hpp"
@@ -81,7 +82,7 @@ class TransformedPigment final : public material::Pigment {
 /// instead of the point in space; transforms written after uv_mapping move the pattern within uv space.
 class UvMappedPigment final : public material::Pigment {
  public:
-  explicit UvMappedPigment(PigmentPtr inner) : inner_(std::move(inner)) {}
+  explicit UvMappedPigment(PigmentPtr inner) : inner_(std::move(inner)) { geometry::request_surface_uv(); }
   material::Rgbft at(const material::PatternPoint& point) const override;
   bool is_constant() const override { return inner_->is_constant(); }
   bool may_transmit() const override { return inner_->may_transmit(); }

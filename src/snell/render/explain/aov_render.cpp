@@ -1,5 +1,6 @@
 #include "snell/render/explain/aov_render.hpp"
 
+#include "snell/geometry/surface_uv.hpp"
 #include "snell/render/aa_neighbours.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -195,7 +196,10 @@ AovRender render_aovs(const scene::Scene& scene, const accel::Accelerator& accel
     if (name == "position") l = &layer(name, {"X", "Y", "Z"});
     if (name == "object") l = &layer(name, {"id"}, true);
     if (name == "material") l = &layer(name, {"id"}, true);
-    if (name == "uv") l = &layer(name, {"U", "V"});
+    if (name == "uv") {
+      l = &layer(name, {"U", "V"});
+      geometry::request_surface_uv();
+    }
     if (name == "samples") l = &layer(name, {"count"});
     if (name == "cost") l = &layer(name, {"nodes", "primitives", "rays"});
     if (name == "time") l = &layer(name, {"ns"});
