@@ -4,7 +4,9 @@
 
 #include <memory>
 
+#include "snell/geometry/cylinder.hpp"
 #include "snell/geometry/sphere.hpp"
+#include "snell/geometry/torus.hpp"
 #include "snell/material/pigment.hpp"
 #include "snell/texture/pattern_pigment.hpp"
 
@@ -27,6 +29,14 @@ TEST(SurfaceUvTest, UvMappedPigmentRequestsTheSpheresUv) {
   EXPECT_NEAR(hit.uv.v, 1.0, 1e-12);
   ASSERT_TRUE(sphere.intersect({{5, 0, 0}, {-1, 0, 0}, 0}, 0, 100, hit));  // +x: a quarter turn on
   EXPECT_NEAR(hit.uv.u, 0.75, 1e-12);
+  // The torus (u around y, v around its tube) and the cylinder (v along the axis) too.
+  const geometry::Torus torus(2, 0.5);
+  ASSERT_TRUE(torus.intersect({{5, 0, 0}, {-1, 0, 0}, 0}, 0, 100, hit));
+  EXPECT_NEAR(hit.uv.u, 0.5, 1e-9);
+  EXPECT_NEAR(hit.uv.v, 0.5, 1e-9);
+  const geometry::Cylinder cylinder({0, 0, 0}, {0, 4, 0}, 1, false);
+  ASSERT_TRUE(cylinder.intersect({{5, 1, 0}, {-1, 0, 0}, 0}, 0, 100, hit));
+  EXPECT_NEAR(hit.uv.v, 0.25, 1e-12);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "snell/geometry/axial_caps.hpp"
 #include "snell/geometry/polynomial.hpp"
+#include "snell/geometry/surface_uv.hpp"
 
 namespace snell::geometry {
 
@@ -62,7 +63,7 @@ void Cone::gather(const Ray& ray, Buffer& hits) const {
       Vec3 n = p.x * u_ + p.y * v_ - (r * slope_) * w_;
       if (length_squared(n) == 0) n = slope_ < 0 ? w_ : -w_;
       h.normal = normalize(n);
-      h.uv = {0.5 + std::atan2(p.y, p.x) * 0.5 * math::kInvPi, p.z / length_};
+      if (surface_uv_requested()) h.uv = {0.5 + std::atan2(p.y, p.x) * 0.5 * math::kInvPi, p.z / length_};
       h.part = 0;
       hits.add(h);
       if (t0 == t1) break;

@@ -5,6 +5,7 @@
 
 #include "snell/geometry/axial_caps.hpp"
 #include "snell/geometry/polynomial.hpp"
+#include "snell/geometry/surface_uv.hpp"
 
 namespace snell::geometry {
 
@@ -54,7 +55,7 @@ void Cylinder::gather(const Ray& ray, Buffer& hits) const {
       LocalHit h;
       h.t = t;
       h.normal = (p.x * u_ + p.y * v_) / radius_;
-      h.uv = {0.5 + std::atan2(p.y, p.x) * 0.5 * math::kInvPi, p.z / length_};
+      if (surface_uv_requested()) h.uv = {0.5 + std::atan2(p.y, p.x) * 0.5 * math::kInvPi, p.z / length_};
       h.part = 0;
       hits.add(h);
       if (t0 == t1) break;

@@ -1,9 +1,10 @@
 #pragma once
 // Whether anything in this process reads surface (u, v) coordinates: uv_mapping pigments and normals and the
 // explain command's uv layer say so when they are made. Until then shapes whose uv costs transcendental
-// functions (the sphere's atan2 and asin: 13% of POV-Ray's interior/crystal.pov, whose textures never look
-// at uv) leave it zero. A latch: once set it stays set, so a scene that reads uv is never shown stale
-// values, and images do not depend on it (a scene that reads no uv cannot tell the difference).
+// functions (the atan2 of spheres, cylinders, cones and tori; the sphere's atan2 and asin were 13% of
+// POV-Ray's interior/crystal.pov, whose textures never look at uv) leave it zero. A latch: once set it stays
+// set, so a scene that reads uv is never shown stale values, and images do not depend on it (a scene that
+// reads no uv cannot tell the difference).
 #include <atomic>
 
 namespace snell::geometry {

@@ -7,6 +7,7 @@
 
 #include "snell/geometry/arc_of_revolution.hpp"
 #include "snell/geometry/polynomial.hpp"
+#include "snell/geometry/surface_uv.hpp"
 
 namespace snell::geometry {
 
@@ -30,8 +31,9 @@ LocalHit Torus::make_hit(const Vec3& p, double t) const {
   Vec3 n = rho > 0 ? p - Vec3(major_ * p.x / rho, 0, major_ * p.z / rho) : Vec3(0, p.y, 0);
   if (length_squared(n) == 0) n = Vec3(0, 1, 0);
   h.normal = normalize(n);
-  h.uv = {0.5 + std::atan2(p.z, p.x) * 0.5 * math::kInvPi,
-          0.5 + std::atan2(p.y, rho - major_) * 0.5 * math::kInvPi};
+  if (surface_uv_requested())  // two atan2, only for a reader of uv (surface_uv.hpp)
+    h.uv = {0.5 + std::atan2(p.z, p.x) * 0.5 * math::kInvPi,
+            0.5 + std::atan2(p.y, rho - major_) * 0.5 * math::kInvPi};
   return h;
 }
 
