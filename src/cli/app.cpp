@@ -141,8 +141,8 @@ std::unique_ptr<CLI::App> make_render_app(CliOptions& o, std::string& accel) {
   render->add_option("--threads", o.threads, "render threads (default: all cores)");
   render->add_option("--integrator", o.integrator, "whitted (POV-Ray's shading, default) or path");
   render->add_option("--accel", accel,
-                     "ray accelerator: embree, bvh, octree, grid, list or none (default: list for scenes of "
-                     "a few objects, else embree)");
+                     "ray accelerator: " + std::string(accel::kAcceleratorKinds) +
+                         " (default: list for scenes of a few objects, else embree)");
   render->add_option("--bits", o.bits, "PNG bit depth: 8 or 16");
   render->add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   render->add_flag("--quiet", o.quiet, "no progress, warnings or statistics");

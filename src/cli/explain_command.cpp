@@ -93,7 +93,7 @@ int run_explain(const std::vector<std::string>& args) {
   app.add_option("--aa-depth", o.aa_depth, "supersampling depth (default 3)");
   app.add_flag("--jitter,!--no-jitter", o.jitter,
                "jitter supersamples (the default; --no-jitter: a plain grid)");
-  app.add_option("--accel", o.accel, "ray accelerator: embree, bvh, octree, grid, list or none");
+  app.add_option("--accel", o.accel, "ray accelerator: " + std::string(accel::kAcceleratorKinds));
   app.add_option("-L,--library-path", o.library_paths, "folder searched by #include (repeatable)");
   app.add_option("--json", o.json, "also write the ray tree as JSON (docs/explain.schema.json)");
   app.add_option("--svg", o.svg, "also draw the ray tree over a plan of the scene (SVG)");

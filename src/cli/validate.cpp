@@ -2,6 +2,7 @@
 #include <system_error>
 
 #include "cli/options.hpp"
+#include "snell/accel/accelerator.hpp"
 #include "snell/io/image_file.hpp"
 #include "snell/memory/budget.hpp"
 #include "snell/render/filter.hpp"
@@ -36,10 +37,9 @@ void validate(CliOptions& o) {
     throw UsageError("--max-memory needs a size such as 2G, 512M or 100000000 (bytes), got '" + o.max_memory +
                      "'");
   if (o.bits != 8 && o.bits != 16) throw UsageError("bit depth must be 8 or 16");
-  if (o.accel != "auto" && o.accel != "embree" && o.accel != "bvh" && o.accel != "octree" &&
-      o.accel != "grid" && o.accel != "list" && o.accel != "none")
-    throw UsageError("unknown accelerator '" + o.accel +
-                     "' (expected embree, bvh, octree, grid, list or none)");
+  if (o.accel != "auto" && !accel::is_accelerator_kind(o.accel))
+    throw UsageError("unknown accelerator '" + o.accel + "' (expected " +
+                     std::string(accel::kAcceleratorKinds) + ")");
   std::error_code ec;
   if (!fs::exists(o.input, ec)) throw UsageError("scene file '" + o.input.string() + "' does not exist");
   if (fs::is_directory(o.input, ec)) throw UsageError("scene file '" + o.input.string() + "' is a folder");

@@ -36,9 +36,13 @@ class Accelerator {
   virtual AcceleratorStats stats() const = 0;
 };
 
-/// `kind` is "embree", "bvh", "octree", "grid", "list" (each object culled by its box, no tree) or "none"
-/// (brute force). Throws std::invalid_argument for
-/// unknown kinds.
+/// The back ends' names, for messages: "list" culls each object by its box (no tree), "none" is brute force.
+inline constexpr std::string_view kAcceleratorKinds = "embree, bvh, octree, grid, list or none";
+
+/// Whether make_accelerator knows `kind`.
+bool is_accelerator_kind(std::string_view kind);
+
+/// `kind` is one of kAcceleratorKinds. Throws std::invalid_argument for unknown kinds.
 std::unique_ptr<Accelerator> make_accelerator(std::string_view kind, const scene::Scene& scene);
 
 }  // namespace snell::accel

@@ -3,6 +3,7 @@
 // scenes of a few objects this is the cheapest search (POV-Ray's example scenes mostly hold 2 to 20
 // top-level objects, where Embree's walk through its user-geometry callbacks, or the BVH's, costs more than
 // the boxes it skips; measured in docs/performance.md, "Small scenes"), and `auto` picks it for them.
+#include <chrono>
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
@@ -33,8 +34,12 @@ class BoxList final : public Accelerator {
   AcceleratorStats stats() const override { return stats_; }
 
  private:
-  IndexedObjects objects_;
-  BoxLanes lanes_;  // objects_.boxes, four at a time
+  /// Built from `indexed`, timed from `start` (so the stats' build time includes sorting the objects).
+  BoxList(std::chrono::steady_clock::time_point start, IndexedObjects indexed);
+
+  std::vector<const scene::Object*> bounded_;
+  std::vector<const scene::Object*> unbounded_;
+  BoxLanes lanes_;  // the boxes of bounded_, four at a time
   AcceleratorStats stats_;
 };
 

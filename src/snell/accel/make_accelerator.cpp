@@ -1,5 +1,6 @@
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "snell/accel/accelerator.hpp"
 #include "snell/accel/box_list.hpp"
@@ -17,15 +18,38 @@ const scene::Object* Accelerator::occluder(const math::Ray& ray, double t_min, d
   return intersect(ray, t_min, t_max, kind, hit) ? hit.object : nullptr;
 }
 
+namespace {
+
+using Factory = std::unique_ptr<Accelerator> (*)(const scene::Scene&);
+
+template <class T>
+std::unique_ptr<Accelerator> make(const scene::Scene& scene) {
+  return std::make_unique<T>(scene);
+}
+
+/// Every back end by its --accel name, the one list that make_accelerator and is_accelerator_kind read.
+constexpr std::pair<std::string_view, Factory> kKinds[] = {
+    {"embree", &make<EmbreeAccelerator>},
+    {"bvh", &make<Bvh>},
+    {"octree", &make<Octree>},
+    {"grid", &make<Grid>},
+    {"list", &make<BoxList>},
+    {"none", &make<BruteForce>},
+};
+
+}  // namespace
+
+bool is_accelerator_kind(std::string_view kind) {
+  for (const auto& [name, factory] : kKinds)
+    if (name == kind) return true;
+  return false;
+}
+
 std::unique_ptr<Accelerator> make_accelerator(std::string_view kind, const scene::Scene& scene) {
-  if (kind == "embree") return std::make_unique<EmbreeAccelerator>(scene);
-  if (kind == "bvh") return std::make_unique<Bvh>(scene);
-  if (kind == "octree") return std::make_unique<Octree>(scene);
-  if (kind == "grid") return std::make_unique<Grid>(scene);
-  if (kind == "list") return std::make_unique<BoxList>(scene);
-  if (kind == "none") return std::make_unique<BruteForce>(scene);
-  throw std::invalid_argument("unknown accelerator '" + std::string(kind) +
-                              "' (expected embree, bvh, octree, grid, list or none)");
+  for (const auto& [name, factory] : kKinds)
+    if (name == kind) return factory(scene);
+  throw std::invalid_argument("unknown accelerator '" + std::string(kind) + "' (expected " +
+                              std::string(kAcceleratorKinds) + ")");
 }
 
 }  // namespace snell::accel

@@ -131,10 +131,20 @@ struct LatticeAxis {
   }
 };
 
+/// The coefficient indices of the 8 corners of lattice cell (x, y, z), corner c = dx + 2 dy + 4 dz at
+/// out[c * stride]: coefficient(pair(x + dx, y + dy), z + dz), each shared table entry read once.
+inline void corner_indices(unsigned x, unsigned y, unsigned z, unsigned* out, size_t stride) {
+  const std::uint16_t* t = lattice_hash().table.data();
+  const unsigned x0 = t[x], x1 = t[x + 1];
+  const unsigned column[4] = {t[x0 ^ y], t[x1 ^ y], t[x0 ^ (y + 1)], t[x1 ^ (y + 1)]};
+  for (unsigned corner = 0; corner < 8; ++corner)
+    out[corner * stride] = t[column[corner & 3] ^ (z + (corner >> 2))] & 0xFF;
+}
+
 /// The 8 corners of the lattice cell around a point: their coefficient indices, and per axis the S-curve
 /// weights and offsets of the cell's two sides, from which each corner's weight and offset follow.
 struct LatticeCell {
-  int index[8];
+  unsigned index[8];
   double side_weight[3][2];  // axis a, side 0 or 1: 1 - s or s
   double side_offset[3][2];  // the point's offset from that side: o or o - 1
   explicit LatticeCell(const Vec3& p) {
@@ -146,12 +156,8 @@ struct LatticeCell {
       side_offset[a][0] = axes[a].offset;
       side_offset[a][1] = axes[a].offset - 1;
     }
-    // coefficient(pair(x + dx, y + dy), z + dz) for the 8 corners, each shared table entry read once.
-    const std::uint16_t* t = lattice_hash().table.data();
-    const unsigned x0 = t[axes[0].cell], x1 = t[axes[0].cell + 1], y = static_cast<unsigned>(axes[1].cell);
-    const unsigned column[4] = {t[x0 ^ y], t[x1 ^ y], t[x0 ^ (y + 1)], t[x1 ^ (y + 1)]};
-    for (int corner = 0; corner < 8; ++corner)
-      index[corner] = t[column[corner & 3] ^ static_cast<unsigned>(axes[2].cell + (corner >> 2))] & 0xFF;
+    corner_indices(static_cast<unsigned>(axes[0].cell), static_cast<unsigned>(axes[1].cell),
+                   static_cast<unsigned>(axes[2].cell), index, 1);
   }
   /// Corner c = dx + 2 dy + 4 dz: its S-curve weight and the point's offset from it.
   double weight(int c) const {
@@ -164,7 +170,7 @@ struct LatticeCell {
 
 /// The linear function a corner contributes: half its first coefficient plus the next three times the
 /// offset (POV-Ray's INCRSUM).
-double value_term(int k, const Vec3& d) {
+double value_term(unsigned k, const Vec3& d) {
   return 0.5 * kCoefficients[k] + kCoefficients[k + 1] * d.x + kCoefficients[k + 2] * d.y +
          kCoefficients[k + 3] * d.z;
 }
@@ -246,16 +252,9 @@ SNELL_SIMD_INLINE void lattice_sums_chunk(const double* const* p, double* const*
     offset[a] = bounded - __builtin_convertvector(whole, V);
     s[a] = offset[a] * offset[a] * (3.0 - 2.0 * offset[a]);  // s_curve
   }
-  // The corners' coefficient indices, as LatticeCell hashes them (corner = dx + 2 dy + 4 dz):
-  // coefficient(pair(x + dx, y + dy), z + dz), each table entry read once.
-  const std::uint16_t* t = lattice_hash().table.data();
+  // The corners' coefficient indices, as LatticeCell hashes them, index[corner][lane].
   unsigned index[8][W];
-  for (int l = 0; l < W; ++l) {
-    const unsigned x0 = t[cell[0][l]], x1 = t[cell[0][l] + 1], y = cell[1][l], z = cell[2][l];
-    const unsigned column[4] = {t[x0 ^ y], t[x1 ^ y], t[x0 ^ (y + 1)], t[x1 ^ (y + 1)]};
-    for (int corner = 0; corner < 8; ++corner)
-      index[corner][l] = t[column[corner & 3] ^ (z + (corner >> 2))] & 0xFF;
-  }
+  for (int l = 0; l < W; ++l) corner_indices(cell[0][l], cell[1][l], cell[2][l], &index[0][l], W);
   const CornerCoefficients& k = corner_coefficients();
   const V one_minus[3] = {1.0 - s[0], 1.0 - s[1], 1.0 - s[2]};
   const V offset_minus[3] = {offset[0] - 1.0, offset[1] - 1.0, offset[2] - 1.0};
