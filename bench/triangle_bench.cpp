@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "snell/accel/accelerator.hpp"
+#include "snell/accel/query_cost.hpp"
 #include "snell/geometry/mesh.hpp"
 #include "snell/geometry/triangle.hpp"
 #include "snell/math/pcg32.hpp"
@@ -191,6 +192,18 @@ void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool
   scene::SurfaceHit warm_up;
   accel->intersect(qs[0].ray, 1e-4, qs[0].t_max, scene::RayKind::camera, warm_up);
   size_t hits = 0;
+  // One untimed pass with the cost tally on: node visits and primitive tests per ray, the structure's
+  // share of the figures (accel/query_cost.hpp).
+  accel::QueryCost cost;
+  accel::t_query_cost = &cost;
+  for (const Query& q : qs) {
+    scene::SurfaceHit hit;
+    if (kind == 2)
+      accel->occluder(q.ray, 1e-4, q.t_max, scene::RayKind::shadow);
+    else
+      accel->intersect(q.ray, 1e-4, q.t_max, scene::RayKind::camera, hit);
+  }
+  accel::t_query_cost = nullptr;
   for (auto _ : state)
     for (const Query& q : qs) {
       if (kind == 2) {
@@ -201,6 +214,8 @@ void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool
       }
     }
   count_rays(state, hits, qs.size());
+  state.counters["nodes/ray"] = static_cast<double>(cost.nodes) / static_cast<double>(qs.size());
+  state.counters["tests/ray"] = static_cast<double>(cost.primitives) / static_cast<double>(qs.size());
 }
 
 void register_all() {

@@ -87,13 +87,30 @@ def triangle_throughput(bench, runs):
         return None
     out = subprocess.run([bench, "--benchmark_filter=^triangles/", f"--benchmark_repetitions={runs}",
                           "--benchmark_format=json"], capture_output=True, text=True, check=True)
-    samples = {}
+    samples, costs = {}, {}
     for b in json.loads(out.stdout)["benchmarks"]:
         if b.get("run_type") != "iteration":
             continue
         row, rays = b["name"].split("/")[1].rsplit("_", 1)  # "triangles/bvh_mesh_random"
         samples.setdefault((row, rays), []).append(b["rays/s"])
-    return {key: statistics.median(values) for key, values in samples.items()}
+        if "nodes/ray" in b:  # the same every repetition: counted once per run, untimed
+            costs[(row, rays)] = (b["nodes/ray"], b["tests/ray"])
+    return {key: statistics.median(values) for key, values in samples.items()}, costs
+
+
+def triangle_cost_table(costs):
+    """Node visits (leaves included) and primitives tested per query, for each structure and ray set. Only
+    the scene-level structures: the mesh rows' inner trees do not report to the tally, and Embree's own
+    nodes are not counted (its tests are the double-precision ones after its float filter)."""
+    lines = ["| structure | " + " | ".join(f"{s} nodes / tests per ray" for s in TRIANGLE_SETS) + " |",
+             "|---|" + "---:|" * len(TRIANGLE_SETS)]
+    for row, label in TRIANGLE_ROWS:
+        if row == "raw_embree" or row.endswith("_mesh"):
+            continue
+        cells = [f"{costs[(row, s)][0]:.1f} / {costs[(row, s)][1]:.1f}" if (row, s) in costs else "–"
+                 for s in TRIANGLE_SETS]
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    return lines
 
 
 def triangle_table(rates):
@@ -194,9 +211,9 @@ def main():
                              f"{r / 1e6:.2f} M | {r / rates[('embree', 'random')]:.2f}x |")
             lines.append("")
             print("\n".join(lines[-7:]), flush=True)
-        triangles = triangle_throughput(args.bench, args.runs)
+        triangles, costs = triangle_throughput(args.bench, args.runs) or (None, None)
         if triangles:
-            table = triangle_table(triangles)
+            table = triangle_table(triangles) + [""] + triangle_cost_table(costs)
             lines += ["## Ray throughput (100,000 triangles, 1 thread)", "",
                       "A soup of small overlapping triangles (`bench/triangle_bench.cpp`): Embree called directly "
                       "on float triangles (rtcIntersect1 / rtcOccluded1) against each accelerator, which sees "
