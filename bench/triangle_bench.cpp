@@ -191,28 +191,21 @@ void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool
   // One query before timing: the mesh shape builds its tree on the first one.
   scene::SurfaceHit warm_up;
   accel->intersect(qs[0].ray, 1e-4, qs[0].t_max, scene::RayKind::camera, warm_up);
-  size_t hits = 0;
+  // The query of the ray set: an occlusion query for shadow rays, else the nearest hit.
+  const auto hit_by = [&](const Query& q) {
+    if (kind == 2) return accel->occluder(q.ray, 1e-4, q.t_max, scene::RayKind::shadow) != nullptr;
+    scene::SurfaceHit hit;
+    return accel->intersect(q.ray, 1e-4, q.t_max, scene::RayKind::camera, hit);
+  };
   // One untimed pass with the cost tally on: node visits and primitive tests per ray, the structure's
   // share of the figures (accel/query_cost.hpp).
   accel::QueryCost cost;
   accel::t_query_cost = &cost;
-  for (const Query& q : qs) {
-    scene::SurfaceHit hit;
-    if (kind == 2)
-      accel->occluder(q.ray, 1e-4, q.t_max, scene::RayKind::shadow);
-    else
-      accel->intersect(q.ray, 1e-4, q.t_max, scene::RayKind::camera, hit);
-  }
+  for (const Query& q : qs) hit_by(q);
   accel::t_query_cost = nullptr;
+  size_t hits = 0;
   for (auto _ : state)
-    for (const Query& q : qs) {
-      if (kind == 2) {
-        hits += accel->occluder(q.ray, 1e-4, q.t_max, scene::RayKind::shadow) != nullptr;
-      } else {
-        scene::SurfaceHit hit;
-        hits += accel->intersect(q.ray, 1e-4, q.t_max, scene::RayKind::camera, hit);
-      }
-    }
+    for (const Query& q : qs) hits += hit_by(q);
   count_rays(state, hits, qs.size());
   state.counters["nodes/ray"] = static_cast<double>(cost.nodes) / static_cast<double>(qs.size());
   state.counters["tests/ray"] = static_cast<double>(cost.primitives) / static_cast<double>(qs.size());
