@@ -4,7 +4,7 @@
 // (the triangles as one `mesh`, under its own BVH). Three ray sets: coherent primary rays (a pinhole
 // camera's grid), incoherent rays (random origins and directions, like diffuse bounces) and shadow rays
 // (occlusion queries from points on the triangles towards a light, most of them blocked part way).
-// Run: build/bench/snell_bench --benchmark_filter='triangles'
+// Run: build/bench/snell_bench --benchmark_filter='triangles|slivers'
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 
@@ -35,7 +35,10 @@ double uniform(math::Pcg32& rng, double lo, double hi) {
 
 /// A soup of `count` small triangles in a 20-unit cube, each a random triangle about as wide as the mean
 /// spacing of their centres: boxes overlap as in a crumpled mesh, and most rays stop within the cube.
-std::vector<std::array<Vec3, 3>> triangle_soup(int count) {
+/// `stretch` > 1 makes slivers: two corners pulled apart along a random axis to `stretch` times that width
+/// each way, long triangles whose boxes overlap far more than their surfaces (as in tessellated CAD
+/// models), where spatial splits pay.
+std::vector<std::array<Vec3, 3>> triangle_soup(int count, double stretch) {
   math::Pcg32 rng(42);
   const double size = 0.5 * 20 / std::cbrt(static_cast<double>(count));
   std::vector<std::array<Vec3, 3>> soup;
@@ -43,6 +46,11 @@ std::vector<std::array<Vec3, 3>> triangle_soup(int count) {
     const Vec3 c{uniform(rng, -10, 10), uniform(rng, -10, 10), uniform(rng, -10, 10)};
     std::array<Vec3, 3> t;
     for (Vec3& v : t) v = c + Vec3{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)} * size;
+    if (stretch > 1) {
+      const auto axis = static_cast<int>(rng.next_uint() % 3);
+      t[0][axis] = c[axis] - stretch * size;
+      t[1][axis] = c[axis] + stretch * size;
+    }
     soup.push_back(t);
   }
   return soup;
@@ -140,9 +148,11 @@ class RawEmbree {
   RTCScene scene_;
 };
 
-const std::vector<std::array<Vec3, 3>>& soup() {
-  static const std::vector<std::array<Vec3, 3>> s = triangle_soup(kTriangles);
-  return s;
+/// The two soups: 0 small triangles, 1 slivers.
+const std::vector<std::array<Vec3, 3>>& soup(int which = 0) {
+  static const std::vector<std::array<Vec3, 3>> small = triangle_soup(kTriangles, 1);
+  static const std::vector<std::array<Vec3, 3>> slivers = triangle_soup(kTriangles, 4);
+  return which == 0 ? small : slivers;
 }
 
 void count_rays(benchmark::State& state, size_t hits, size_t rays) {
@@ -152,9 +162,9 @@ void count_rays(benchmark::State& state, size_t hits, size_t rays) {
   state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(state.iterations() * rays);
 }
 
-void raw_embree(benchmark::State& state, int kind) {
-  const RawEmbree embree(soup());
-  const std::vector<Query> qs = queries(soup(), kind);
+void raw_embree(benchmark::State& state, int kind, int which) {
+  const RawEmbree embree(soup(which));
+  const std::vector<Query> qs = queries(soup(which), kind);
   size_t hits = 0;
   for (auto _ : state)
     for (const Query& q : qs) hits += embree.query(q, kind == 2);
@@ -162,11 +172,11 @@ void raw_embree(benchmark::State& state, int kind) {
 }
 
 /// The triangles as separate scene objects (one `triangle` each), or as one `mesh` object.
-scene::Scene triangle_scene(bool as_mesh) {
+scene::Scene triangle_scene(bool as_mesh, int which) {
   scene::Scene s;
   if (as_mesh) {
     geometry::MeshData data;
-    for (const auto& t : soup()) {
+    for (const auto& t : soup(which)) {
       const int base = static_cast<int>(data.vertices.size());
       for (const Vec3& v : t) data.vertices.push_back(v);
       data.faces.push_back({base, base + 1, base + 2});
@@ -176,7 +186,7 @@ scene::Scene triangle_scene(bool as_mesh) {
     s.objects.push_back(std::move(o));
     return s;
   }
-  for (const auto& t : soup()) {
+  for (const auto& t : soup(which)) {
     auto o = std::make_shared<scene::Object>();
     o->shape = std::make_shared<geometry::Triangle>(t[0], t[1], t[2]);
     s.objects.push_back(std::move(o));
@@ -184,10 +194,10 @@ scene::Scene triangle_scene(bool as_mesh) {
   return s;
 }
 
-void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool as_mesh) {
-  const scene::Scene s = triangle_scene(as_mesh);
+void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool as_mesh, int which) {
+  const scene::Scene s = triangle_scene(as_mesh, which);
   const auto accel = accel::make_accelerator(accel_kind, s);
-  const std::vector<Query> qs = queries(soup(), kind);
+  const std::vector<Query> qs = queries(soup(which), kind);
   // One query before timing: the mesh shape builds its tree on the first one.
   scene::SurfaceHit warm_up;
   accel->intersect(qs[0].ray, 1e-4, qs[0].t_max, scene::RayKind::camera, warm_up);
@@ -214,19 +224,24 @@ void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool
 void register_all() {
   for (int kind = 0; kind < 3; ++kind) {
     const std::string suffix = kKindNames[kind];
-    benchmark::RegisterBenchmark(("triangles/raw_embree_" + suffix).c_str(), raw_embree, kind)
+    benchmark::RegisterBenchmark(("triangles/raw_embree_" + suffix).c_str(), raw_embree, kind, 0)
         ->Unit(benchmark::kMillisecond);
     for (const char* a : {"embree", "bvh", "octree", "grid"})
       benchmark::RegisterBenchmark(("triangles/" + std::string(a) + "_" + suffix).c_str(), snell_accel, a,
-                                   kind, false)
+                                   kind, false, 0)
           ->Unit(benchmark::kMillisecond);
     // One mesh object: Embree walks it as native float triangles (each hit redone in double); the own
     // accelerators hand it to the mesh's own BVH.
     for (const char* a : {"embree", "bvh"})
       benchmark::RegisterBenchmark(("triangles/" + std::string(a) + "_mesh_" + suffix).c_str(), snell_accel,
-                                   a, kind, true)
+                                   a, kind, true, 0)
           ->Unit(benchmark::kMillisecond);
   }
+  // Incoherent rays through the slivers: Embree alone (its high-quality build makes spatial splits) and
+  // the own BVH, which makes them too (tests/geometry/wide_bvh_test.cpp prints the visits without).
+  benchmark::RegisterBenchmark("slivers/raw_embree_random", raw_embree, 1, 1)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("slivers/bvh_random", snell_accel, "bvh", 1, false, 1)
+      ->Unit(benchmark::kMillisecond);
 }
 
 const bool registered = (register_all(), true);

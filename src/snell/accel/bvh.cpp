@@ -13,6 +13,13 @@ namespace {
 // a block of up to eight triangles, filtered at once, about two.
 constexpr double kObjectCost = 4.0;
 constexpr double kTriangleBlockCost = 2.0;
+/// Spatial splits may put each object in two leaves on average (docs/benchmark.md: long triangles).
+constexpr double kReferenceBudget = 2;
+
+/// A triangle's corner in world space (its transform applied in double).
+math::Vec3 world_point(const PlainTriangle& t, const math::Vec3& p) {
+  return t.transform ? t.transform->point(p) : p;
+}
 
 /// Bits 8k .. 8k + 7 of a block's tag: the lanes ray kind k sees.
 uint32_t visible_lanes(const geometry::TriangleBlock& block, scene::RayKind kind) {
@@ -29,9 +36,15 @@ Bvh::Bvh(const scene::Scene& scene) {
   std::vector<uint8_t> kinds;
   kinds.reserve(plain.size());
   for (const PlainTriangle& t : plain) kinds.push_back(t.shape ? 1 : 0);
+  std::vector<std::array<math::Vec3, 3>> corners(plain.size());
+  for (size_t i = 0; i < plain.size(); ++i)
+    if (plain[i].shape)
+      for (int k = 0; k < 3; ++k) corners[i][k] = world_point(plain[i], plain[i].vertices[k]);
   geometry::WideBvh::Input input;
   input.boxes = indexed.boxes;
   input.kinds = kinds;
+  input.triangles = corners;
+  input.reference_budget = kReferenceBudget;
   input.cost = {kObjectCost, kTriangleBlockCost};
   input.group = {1, geometry::TriangleBlock::kSize};
   input.max_leaf = geometry::TriangleBlock::kSize;
@@ -46,9 +59,9 @@ Bvh::Bvh(const scene::Scene& scene) {
     for (uint32_t i = first; i < first + count; ++i) {
       const PlainTriangle& t = plain[tree_.order()[i]];
       const std::array<math::Vec3, 3>& v = t.vertices;
-      const auto world = [&](const math::Vec3& p) { return t.transform ? t.transform->point(p) : p; };
       const int lane = static_cast<int>(block.count);
-      block.add(world(v[0]), world(v[1]), world(v[2]), static_cast<uint32_t>(triangles_.size()));
+      block.add(world_point(t, v[0]), world_point(t, v[1]), world_point(t, v[2]),
+                static_cast<uint32_t>(triangles_.size()));
       for (scene::RayKind kind : {scene::RayKind::camera, scene::RayKind::reflection,
                                   scene::RayKind::refraction, scene::RayKind::shadow})
         if (t.object->visible_to(kind)) block.tag |= 1u << (8 * static_cast<int>(kind) + lane);

@@ -1,9 +1,11 @@
 #pragma once
 // Bounding volume hierarchy over primitives given by their boxes, shared by the scene-level accelerator
 // (accel/bvh.hpp) and the mesh shape: binary, built top-down with the surface area heuristic over 16
-// centroid bins (Wald, "On fast construction of SAH-based bounding volume hierarchies", 2007), collapsed
-// to eight children per node, walked nearest child first with a fixed stack. Leaves are ranges of the
-// leaf order; their owner keeps what they hold (objects, packed triangles) and may relabel them.
+// centroid bins (Wald, "On fast construction of SAH-based bounding volume hierarchies", 2007) and, where
+// children would overlap, spatial splits that put a primitive in both (Stich, Friedrich and Dietrich,
+// "Spatial splits in bounding volume hierarchies", 2009), collapsed to eight children per node, walked
+// nearest child first with a fixed stack. Leaves are ranges of the leaf order, in which a primitive may
+// appear more than once; their owner keeps what they hold (objects, packed triangles) and may relabel them.
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -56,6 +58,12 @@ class WideBvh {
     std::array<uint32_t, 2> group{1, 1};
     /// At most this many primitives per leaf.
     uint32_t max_leaf = 8;
+    /// Spatial splits: at most this many references (a primitive in several leaves) per primitive, on
+    /// average, over the tree; 1 makes none.
+    double reference_budget = 1;
+    /// The corners of each primitive of kind 1 (entries of kind 0 unused), so that a spatial split bounds
+    /// the parts of the triangle itself on each side; empty: the parts of its box.
+    std::span<const std::array<math::Vec3, 3>> triangles;
   };
 
   WideBvh() = default;
