@@ -65,13 +65,9 @@ void broadcast(void* data, int count, int type, int root) {
   MPI_Bcast(data, count, datatype(type), root, MPI_COMM_WORLD);
 }
 
-void abort_world(int code) {
-  MPI_Abort(MPI_COMM_WORLD, code);
-}
-
 }  // namespace
 
 extern "C" __attribute__((visibility("default"))) int snell_mpi_api(SnellMpiApi* api) {
-  *api = {init, finalize, send, recv, iprobe, broadcast, abort_world};
+  *api = {init, finalize, send, recv, iprobe, broadcast};
   return 0;
 }

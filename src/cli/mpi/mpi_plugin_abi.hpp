@@ -23,7 +23,6 @@ struct SnellMpiApi {
   /// Whether a message is waiting, and its sender and tag.
   int (*iprobe)(int source, int tag, int* from, int* received_tag);
   void (*broadcast)(void* data, int count, int type, int root);
-  void (*abort)(int code);
 };
 
 /// The plugin's one entry point: fills `api`. Returns 0 on success.
