@@ -17,20 +17,8 @@ namespace {
 using math::Color;
 using math::Vec3;
 
-scene::Scene lit_sphere_scene() {
-  scene::Scene s;
-  material::Finish f;  // POV-Ray defaults: ambient 0.1, diffuse 0.6
-  s.objects.push_back(test::object(std::make_shared<geometry::Sphere>(Vec3(0, 0, 0), 1.0),
-                                   test::texture({Color(1, 0.5, 0.25)}, f)));
-  s.lights.push_back(test::point_light({0, 5, -6}));
-  s.camera.location = {0, 0, -5};
-  s.camera.direction = {0, 0, 1};
-  s.camera.right = {1, 0, 0};
-  return s;
-}
-
 TEST(WhittedTest, LitDiffuseSphereCentreIsAmbientPlusLambert) {
-  const scene::Scene s = lit_sphere_scene();
+  const scene::Scene s = test::lit_sphere_scene();
   const auto accel = accel::make_accelerator("none", s);
   RenderOptions o;
   o.width = 11;
@@ -50,7 +38,7 @@ TEST(WhittedTest, LitDiffuseSphereCentreIsAmbientPlusLambert) {
 }
 
 TEST(WhittedTest, ShadowedPointGetsOnlyAmbient) {
-  scene::Scene s = lit_sphere_scene();
+  scene::Scene s = test::lit_sphere_scene();
   // An opaque blocker between the light and the lit point.
   s.objects.push_back(
       test::object(std::make_shared<geometry::Sphere>(Vec3(0, 2.5, -3.5), 0.5), test::texture({Color(1)})));
@@ -66,7 +54,7 @@ TEST(WhittedTest, ShadowlessLightGivesNoHighlights) {
   // POV-Ray 3.7 draws no phong or specular highlight from a shadowless light (its fill light; trace.cpp,
   // ComputeOneDiffuseLight): its render of a sphere with specular 0.8 and phong 0.5 lit only by one shows
   // diffuse light alone. The light straight behind the camera puts both highlights at the sphere's centre.
-  scene::Scene s = lit_sphere_scene();
+  scene::Scene s = test::lit_sphere_scene();
   material::Finish shiny;
   shiny.specular = 0.8;
   shiny.roughness = 0.01;
@@ -86,7 +74,7 @@ TEST(WhittedTest, ShadowlessLightGivesNoHighlights) {
 }
 
 TEST(WhittedTest, FilteredShadowIsTintedByTransparentBlocker) {
-  scene::Scene s = lit_sphere_scene();
+  scene::Scene s = test::lit_sphere_scene();
   // rgbf <0.5,1,1,1> blocker: the shadow ray crosses it twice, each time multiplied by filter*rgb.
   s.objects.push_back(test::object(std::make_shared<geometry::Sphere>(Vec3(0, 2.5, -3.5), 0.5),
                                    test::texture({Color(0.5, 1, 1), 1.0, 0.0})));

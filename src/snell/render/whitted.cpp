@@ -68,15 +68,6 @@ const scene::Object* cacheable_blocker(const scene::SurfaceHit& hit) {
   return cacheable_blocker(hit.solid ? hit.solid : hit.object);
 }
 
-/// Whether no surface of `object` can let light through (its leaves' textures, a CSG's own too).
-bool stops_all_light(const scene::Object& object) {
-  if (object.texture && object.texture->may_transmit()) return false;
-  if (object.csg)
-    for (const auto& child : object.csg->children())
-      if (!stops_all_light(*child)) return false;
-  return true;
-}
-
 material::Rgbft pigment_at(const scene::SurfaceHit& hit) {
   // Layered textures composite inside Texture::pigment_at; the top layer's finish lights the result.
   return hit.object->texture->pigment_at(hit.texture_point, hit.normal, hit.uv);
@@ -118,6 +109,7 @@ WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Acc
   opaque_shadows_ = !has_interior_media_ && std::all_of(scene.objects.begin(), scene.objects.end(),
                                                         [](const auto& o) { return stops_all_light(*o); });
   if (has_atmosphere_) camera_inside_ = containing(scene.camera.location);
+  if (!opaque_shadows_) shadow_split_ = ShadowSplit::make(scene, accelerator);
   caustics_ = photons::make_caustics(scene, accelerator);
 }
 
@@ -127,6 +119,10 @@ std::string WhittedIntegrator::summary() const {
   if (caustics_) {
     if (!lines.empty()) lines.push_back('\n');
     lines.append(caustics_->summary());
+  }
+  if (shadow_split_) {
+    if (!lines.empty()) lines.push_back('\n');
+    lines.append(shadow_split_->summary());
   }
   return lines;
 }
@@ -685,10 +681,22 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   // Built only for scenes with interior media: it is a few hundred bytes to clear for every shadow ray.
   std::optional<ShadowMedia> media;
   if (thinned_by_media) media.emplace(math::Ray{point, dir, context.time});
+  // Where the scene is split (shadow_split.hpp), any opaque crossing settles the ray, and the walk below
+  // then meets only the transparent objects. (Not for an observer, which wants every blocker in order.)
+  const accel::Accelerator* walked = &accel_;
+  if (shadow_split_ && !context.observer) {
+    const math::Ray ray{origin, dir, context.time};
+    if (const scene::Object* blocker =
+            shadow_split_->opaque().occluder(ray, 0.0, remaining, RayKind::shadow)) {
+      if (cached) *cached = cacheable_blocker(blocker);
+      return Color(0);
+    }
+    walked = &shadow_split_->passing();
+  }
   // Pass through transparent blockers, tinting by each one's transmitted colour (trace.cpp,
   // TracePointLightShadowRay / ComputeShadowColour). Bounded so that coincident surfaces cannot loop.
   for (int crossings = 0; crossings < 64 && remaining > 0; ++crossings) {
-    if (!accel_.intersect({origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit)) break;
+    if (!walked->intersect({origin, dir, context.time}, 0.0, remaining, RayKind::shadow, hit)) break;
     // A texture that never transmits stops the ray without its pigment being evaluated (an observer wants
     // the colour). Rgbft{} is opaque black.
     const bool known_opaque = !context.observer && !hit.object->texture->may_transmit();

@@ -13,6 +13,7 @@
 #include "snell/render/light_ray.hpp"
 #include "snell/render/photons/caustics.hpp"
 #include "snell/render/radiosity/solver.hpp"
+#include "snell/render/shadow_split.hpp"
 
 namespace snell::render {
 
@@ -121,6 +122,8 @@ class WhittedIntegrator final : public Integrator {
   std::unique_ptr<radiosity::Solver> radiosity_;
   /// Set when the scene has `photons {}`: the caustic photon map (render/photons/caustics.hpp).
   std::unique_ptr<photons::Caustics> caustics_;
+  /// Set where some surfaces let light through and others stop it all (render/shadow_split.hpp).
+  std::unique_ptr<ShadowSplit> shadow_split_;
 };
 
 /// Origin for a ray leaving surface point `p` towards the side `side` points to: moved off the surface by
