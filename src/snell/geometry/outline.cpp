@@ -16,6 +16,7 @@ Outline::Outline(std::vector<CurveSegment> pieces) : pieces_(std::move(pieces)) 
     lo_ = {std::min(lo_.u, p.lo.u), std::min(lo_.v, p.lo.v)};
     hi_ = {std::max(hi_.u, p.hi.u), std::max(hi_.v, p.hi.v)};
   }
+  tree_ = PieceTree(pieces_);
 }
 
 int Outline::crossings(const CurveSegment& piece, Vec2 n, double k, double* roots) {
@@ -31,8 +32,10 @@ bool Outline::contains(Vec2 q) const {
   bool odd = false;
   const Vec2 n{0, 1};
   const double k = -q.v;
-  for (const CurveSegment& piece : pieces_) {
-    if (piece.hi.u < q.u || !piece.line_may_cross(n, k)) continue;
+  // Only the pieces whose rectangles meet the half-line's stretch within the outline's rectangle.
+  tree_.for_each_near(q, {hi_.u, q.v}, n, k, [&](uint32_t i) {
+    const CurveSegment& piece = pieces_[i];
+    if (piece.hi.u < q.u || !piece.line_may_cross(n, k)) return;
     const std::array<double, 4> coeffs = piece.against_line(n, k);
     double roots[3];
     const int count = real_roots(coeffs, 0.0, 1.0, std::span<double>(roots, 3));
@@ -50,7 +53,7 @@ bool Outline::contains(Vec2 q) const {
       side = next;
     }
     if (above(1) != side && piece.at(breaks[nb - 1]).u > q.u) odd = !odd;
-  }
+  });
   return odd;
 }
 

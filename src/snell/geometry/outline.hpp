@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "snell/geometry/curve_segment.hpp"
+#include "snell/geometry/piece_tree.hpp"
 
 namespace snell::geometry {
 
@@ -52,6 +53,13 @@ class Outline {
     return crossings(pieces_[i], n, k, roots);
   }
 
+  /// Calls f(piece index) for the pieces whose rectangles may meet the part of the line n . q + k = 0
+  /// within the rectangle [lo, hi] (PieceTree::for_each_near), in no particular order.
+  template <typename F>
+  void for_each_piece_near(Vec2 lo, Vec2 hi, Vec2 n, double k, F&& f) const {
+    tree_.for_each_near(lo, hi, n, k, f);
+  }
+
   template <typename F>
   void for_each_crossing(Vec2 n, double k, F&& f) const {
     double roots[3];
@@ -67,6 +75,7 @@ class Outline {
 
   std::vector<CurveSegment> pieces_;
   Vec2 lo_, hi_;
+  PieceTree tree_;
 };
 
 }  // namespace snell::geometry

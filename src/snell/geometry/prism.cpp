@@ -31,6 +31,26 @@ Bounds3 Prism::bounds() const {
   return b;
 }
 
+namespace {
+
+/// [lo, hi]: the values of o + t d for t in [t0, t1] (t1 may be infinite), widened well beyond the rounding
+/// of the wall points computed from them.
+void span_over(double o, double d, double t0, double t1, double& lo, double& hi) {
+  if (d == 0) {
+    lo = hi = o;
+  } else {
+    const double a = o + t0 * d, b = o + t1 * d;
+    lo = std::min(a, b);
+    hi = std::max(a, b);
+  }
+  const double scale =
+      1 + std::fabs(o) + (std::isfinite(lo) ? std::fabs(lo) : 0) + (std::isfinite(hi) ? std::fabs(hi) : 0);
+  lo -= 1e-9 * scale;
+  hi += 1e-9 * scale;
+}
+
+}  // namespace
+
 template <typename F>
 void Prism::crossings(const Ray& local, double t_min, const double& t_max, F&& emit) const {
   // Walls first: a cap costs an outline containment test, skipped once a nearer wall crossing has
@@ -108,17 +128,23 @@ void Prism::wall_crossings(const Ray& local, double t_min, const double& t_max, 
   } else if (o.y < h1_ || o.y > h2_) {
     return;
   }
-  for (size_t i = 0; i < pieces.size(); ++i) {
+  // The walls' points on the ray lie over the stretch of (o.x, o.z) + t (d.x, d.z) for t in [t_low, t_end]:
+  // only pieces whose rectangles meet it are looked at (outline.hpp's piece tree).
+  const double t_end = std::min(t_high, t_max);
+  Vec2 lo, hi;
+  span_over(o.x, d.x, t_low, t_end, lo.u, hi.u);
+  span_over(o.z, d.z, t_low, t_end, lo.v, hi.v);
+  outline_.for_each_piece_near(lo, hi, n, k, [&](uint32_t i) {
     const CurveSegment& p = pieces[i];
-    if (!p.line_may_cross(n, k)) continue;
+    if (!p.line_may_cross(n, k)) return;
     const double a0 = (p.lo.u - o.x) * d.x, a1 = (p.hi.u - o.x) * d.x;
     const double b0 = (p.lo.v - o.z) * d.z, b1 = (p.hi.v - o.z) * d.z;
     const double t0 = (std::min(a0, a1) + std::min(b0, b1)) / across;
     const double t1 = (std::max(a0, a1) + std::max(b0, b1)) / across;
     const double slack = 1e-9 * (1 + std::fabs(t0) + std::fabs(t1));
-    if (t1 + slack <= t_low || t0 - slack >= t_high) continue;
+    if (t1 + slack <= t_low || t0 - slack >= t_high) return;
     order.push_back({t0 - slack, i});
-  }
+  });
   std::sort(order.begin(), order.end(), [](const Near& a, const Near& b) { return a.t0 < b.t0; });
   double roots[3];
   for (const Near& near : order) {
