@@ -78,6 +78,12 @@ bool Cone::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) 
   return hits.nearest(hit);
 }
 
+bool Cone::crosses(const Ray& ray, double t_min, double t_max) const {
+  AnyBuffer hits(t_min, t_max);
+  gather(ray, hits);
+  return hits.found();
+}
+
 void Cone::all_hits(const Ray& ray, double t_min, double t_max, HitList& out) const {
   HitBuffer<4> hits(t_min, t_max);
   gather(ray, hits);

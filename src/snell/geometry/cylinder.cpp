@@ -70,6 +70,12 @@ bool Cylinder::intersect(const Ray& ray, double t_min, double t_max, LocalHit& h
   return hits.nearest(hit);
 }
 
+bool Cylinder::crosses(const Ray& ray, double t_min, double t_max) const {
+  AnyBuffer hits(t_min, t_max);
+  gather(ray, hits);
+  return hits.found();
+}
+
 void Cylinder::all_hits(const Ray& ray, double t_min, double t_max, HitList& out) const {
   HitBuffer<4> hits(t_min, t_max);
   gather(ray, hits);

@@ -11,6 +11,7 @@ class Cylinder final : public Shape {
 
   Bounds3 bounds() const override;
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  bool crosses(const Ray& ray, double t_min, double t_max) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override;
   bool inside_within_bounds() const override { return true; }
@@ -19,7 +20,7 @@ class Cylinder final : public Shape {
   std::string_view kind() const override { return "cylinder"; }
 
  private:
-  /// Every crossing into `hits` (a HitBuffer<4>, or a NearestBuffer for intersect).
+  /// Every crossing into `hits` (a HitBuffer<4>, a NearestBuffer for intersect, an AnyBuffer for crosses).
   template <typename Buffer>
   void gather(const Ray& ray, Buffer& hits) const;
 

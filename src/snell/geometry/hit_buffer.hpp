@@ -76,4 +76,19 @@ class NearestBuffer {
   bool found_ = false;
 };
 
+/// Whether any crossing lies in (t_min, t_max), for Shape::crosses: accepts nothing once one is found, so a
+/// shape's gather stops building hits, and the hits' normals and uvs, never read, compile away.
+class AnyBuffer {
+ public:
+  AnyBuffer(double t_min, double t_max) : t_min_(t_min), t_max_(t_max) {}
+
+  bool accepts(double t) const { return !found_ && t > t_min_ && t < t_max_; }
+  void add(const LocalHit& hit) { found_ = found_ || (hit.t > t_min_ && hit.t < t_max_); }
+  bool found() const { return found_; }
+
+ private:
+  double t_min_, t_max_;
+  bool found_ = false;
+};
+
 }  // namespace snell::geometry

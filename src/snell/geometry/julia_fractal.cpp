@@ -89,7 +89,9 @@ double JuliaFractal::distance_estimate(const Vec3& p) const {
   for (int i = 0; i < s_.max_iteration; ++i) {
     const double r = std::sqrt(dot4(z, z));
     if (r > kBailoutRadius) return 0.5 * r * std::log(r) / dz * (2.0 / s_.power);
-    dz *= s_.power * std::pow(r, s_.power - 1);
+    // k |z|^(k-1) for k = 2 or 3, without pow (3.4% of benchmark.pov's profile; the same values: pow of
+    // an exponent 1 or 2 is exact or one rounding, as the product is).
+    dz *= s_.power * (s_.power == 2 ? r : r * r);
     z = step(z);
   }
   return 0;  // did not escape: in the set
