@@ -47,7 +47,10 @@ void Cylinder::gather(const Ray& ray, Buffer& hits) const {
 
   double t0, t1;
   const double a = d.x * d.x + d.y * d.y;
-  if (a > 0 && solve_quadratic(a, 2 * (o.x * d.x + o.y * d.y), o.x * o.x + o.y * o.y - r2, t0, t1)) {
+  if (a > 0) {
+    // A ray that misses the infinite cylinder misses the caps too (they lie inside it): most rays tested
+    // against a thin cylinder stop here.
+    if (!solve_quadratic(a, 2 * (o.x * d.x + o.y * d.y), o.x * o.x + o.y * o.y - r2, t0, t1)) return;
     for (double t : {t0, t1}) {
       if (!hits.accepts(t)) continue;
       const Vec3 p = o + t * d;

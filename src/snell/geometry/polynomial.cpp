@@ -191,26 +191,6 @@ double evaluate_polynomial(std::span<const double> coeffs, double x) {
   return r;
 }
 
-bool solve_quadratic(double a, double b, double c, double& t0, double& t1) {
-  if (a == 0) {
-    if (b == 0) return false;
-    t0 = t1 = -c / b;
-    return true;
-  }
-  const double disc = b * b - 4 * a * c;
-  if (disc < 0) return false;
-  // Avoid cancellation (Numerical Recipes 5.6): q = -(b + sign(b) sqrt(disc)) / 2.
-  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-  if (q == 0) {
-    t0 = t1 = 0;
-    return true;
-  }
-  t0 = q / a;
-  t1 = c / q;
-  if (t0 > t1) std::swap(t0, t1);
-  return true;
-}
-
 namespace {
 
 // A monic quadratic in closed form: the calls from spline shapes (prism, lathe, sor) are about half
