@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "snell/math/pcg32.hpp"
 
@@ -52,6 +53,23 @@ TEST(KdTreeTest, NearestMatchesBruteForce) {
       EXPECT_DOUBLE_EQ(got[i].distance_squared, expected[i].distance_squared);
     }
   }
+}
+
+TEST(KdTreeTest, PointsExactlyAtTheRadiusAreKept) {
+  // A grid of spacing 0.125 (exact in binary): from a grid point, its neighbours lie at exactly the radius
+  // 0.125 or 0.125 * sqrt 2, where the cell-distance pruning must not drop them.
+  std::vector<math::Vec3> points;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j)
+      for (int l = 0; l < 4; ++l) points.push_back({0.125 * i, 0.125 * j, 0.125 * l});
+  const KdTree tree(points);
+  for (const double radius : {0.125, 0.125 * std::sqrt(2.0), 0.25})
+    for (size_t q = 0; q < points.size(); q += 37) {
+      const auto expected = brute_force(points, points[q], 1000, radius);
+      const auto got = tree.nearest(points[q], 1000, radius);
+      ASSERT_EQ(got.size(), expected.size()) << "point " << q << " radius " << radius;
+      for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i].index, expected[i].index);
+    }
 }
 
 TEST(KdTreeTest, EmptyTreeAndZeroKFindNothing) {

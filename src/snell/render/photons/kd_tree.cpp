@@ -63,8 +63,13 @@ void KdTree::build(std::vector<Node>& items, size_t lo, size_t hi) {
 // the radius shrinks to the farthest of them (select-and-shrink: amortised constant work per candidate,
 // where a heap of k paid log k). Points at exactly the shrunk radius stay: ties are settled by index at
 // the end, so the answer is the k smallest (distance, index) whatever order the tree visits them in.
+// A far side is pruned by the squared distance from the centre to its cell, kept incrementally over the
+// axes (`gap`: the centre's distance to the cell along each axis, `cell_distance` the sum of their squares;
+// Arya and Mount, "Algorithms for fast vector quantization", 1993), not by the last splitting plane alone:
+// fewer cells are entered. The test keeps a relative margin of 1e-12 over the rounding of that sum, so a
+// cell is dropped only where none of its points could pass the distance test in `consider`.
 void KdTree::search(size_t lo, size_t hi, const math::Vec3& centre, size_t k, double& radius_squared,
-                    std::vector<Neighbour>& found) const {
+                    std::vector<Neighbour>& found, math::Vec3& gap, double cell_distance) const {
   auto consider = [&](const Node& node) {
     const math::Vec3 d = node.point - centre;
     const double d2 = dot(d, d);
@@ -88,16 +93,22 @@ void KdTree::search(size_t lo, size_t hi, const math::Vec3& centre, size_t k, do
   // The near side first, and the splitting point after it: the first k found are then near ones, and
   // bound the rest of the search tightly.
   if (left_first)
-    search(lo, mid, centre, k, radius_squared, found);
+    search(lo, mid, centre, k, radius_squared, found, gap, cell_distance);
   else
-    search(mid + 1, hi, centre, k, radius_squared, found);
+    search(mid + 1, hi, centre, k, radius_squared, found, gap, cell_distance);
   consider(node);
-  // The far side can hold a point at exactly the pruning distance (ties by index), hence <=.
-  if (offset * offset <= radius_squared) {
+  // The far side's cell lies beyond the plane: at least |offset| away along this axis. It can hold a point
+  // at exactly the pruning distance (ties by index), hence <=.
+  double& along = gap[node.axis];
+  const double before = along;
+  const double far_distance = cell_distance - before * before + offset * offset;
+  if (far_distance <= radius_squared * (1 + 1e-12)) {
+    along = offset;
     if (left_first)
-      search(mid + 1, hi, centre, k, radius_squared, found);
+      search(mid + 1, hi, centre, k, radius_squared, found, gap, far_distance);
     else
-      search(lo, mid, centre, k, radius_squared, found);
+      search(lo, mid, centre, k, radius_squared, found, gap, far_distance);
+    along = before;
   }
 }
 
@@ -106,7 +117,8 @@ void KdTree::nearest(const math::Vec3& centre, size_t k, double max_radius,
   found.clear();
   if (k == 0 || nodes_.empty()) return;
   double radius_squared = max_radius * max_radius;
-  search(0, nodes_.size(), centre, k, radius_squared, found);
+  math::Vec3 gap{0, 0, 0};
+  search(0, nodes_.size(), centre, k, radius_squared, found, gap, 0);
   if (found.size() > k) keep_nearest(found, k);
   std::sort(found.begin(), found.end(), Closer{});
 }

@@ -36,7 +36,7 @@ class KdTree {
   };
   void build(std::vector<Node>& items, size_t lo, size_t hi);
   void search(size_t lo, size_t hi, const math::Vec3& centre, size_t k, double& radius_squared,
-              std::vector<Neighbour>& found) const;
+              std::vector<Neighbour>& found, math::Vec3& gap, double cell_distance) const;
 
   std::vector<Node> nodes_;
 };
