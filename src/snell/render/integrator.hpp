@@ -39,7 +39,12 @@ struct TraceContext {
   radiosity::TileRecords radiosity_tile;
   /// Per light (by its index in Scene::lights): the object that last stopped one of its shadow rays, tried
   /// first by the next one (POV-Ray's shadow cache, lighting.cpp). Neighbouring points usually share it.
-  std::vector<const scene::Object*> shadow_blockers;
+  struct ShadowBlocker {
+    const scene::Object* object = nullptr;
+    /// No surface of it lets light through: a crossing is enough, no hit need be built.
+    bool stops_all_light = false;
+  };
+  std::vector<ShadowBlocker> shadow_blockers;
   /// Shadow-tested light colours of the surface points being shaded, one frame of Scene::lights.size()
   /// entries per nesting level (render/lit_lights.hpp); reused by every layer and map entry of a texture.
   LitLights lit_lights;

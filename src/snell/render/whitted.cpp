@@ -635,13 +635,13 @@ Color WhittedIntegrator::povray_subsurface_light(const ShadingPoint& sp, const s
   return povray_subsurface_radiance(query, accel_, context.rng, lights) * sp.opacity;
 }
 
-const scene::Object** WhittedIntegrator::cached_blocker(const scene::Light* source,
-                                                        TraceContext& context) const {
+TraceContext::ShadowBlocker* WhittedIntegrator::cached_blocker(const scene::Light* source,
+                                                               TraceContext& context) const {
   if (!source || context.observer || scene_.lights.empty()) return nullptr;
   const auto index = static_cast<size_t>(source - scene_.lights.data());
   if (source < scene_.lights.data() || index >= scene_.lights.size()) return nullptr;
   if (context.shadow_blockers.size() != scene_.lights.size())
-    context.shadow_blockers.assign(scene_.lights.size(), nullptr);
+    context.shadow_blockers.assign(scene_.lights.size(), {});
   return &context.shadow_blockers[index];
 }
 
@@ -654,16 +654,17 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
   ++context.counters.shadow;
   // Any opaque blocker makes the light black, whatever else lies on the way, so the last one this light
   // met is tried alone before the whole scene. (Not while an observer records the blockers in order.)
-  const scene::Object** cached = cached_blocker(source, context);
+  TraceContext::ShadowBlocker* cached = cached_blocker(source, context);
   // Filled by each test that finds one; kept per thread, as clearing a fresh one for every shadow ray cost
   // more than some of the tests (nothing below traces another shadow ray while it is in use).
   thread_local scene::SurfaceHit hit;
-  if (cached && *cached) {
+  if (cached && cached->object) {
     const math::Ray ray{origin, dir, context.time};
-    // Where every surface stops all light, a crossing is enough and its hit is not built.
-    if (opaque_shadows_
-            ? accel::object_blocks(**cached, ray, 0.0, remaining, RayKind::shadow)
-            : accel::test_object(**cached, ray, 0.0, remaining, RayKind::shadow, hit) && opaque_at(hit))
+    // Where the blocker stops all light, a crossing is enough and its hit is not built.
+    const scene::Object& blocker = *cached->object;
+    if (cached->stops_all_light
+            ? accel::object_blocks(blocker, ray, 0.0, remaining, RayKind::shadow)
+            : accel::test_object(blocker, ray, 0.0, remaining, RayKind::shadow, hit) && opaque_at(hit))
       return Color(0);
   }
   // Where nothing can let light through, any blocker will do: the walk stops at the first one found and
@@ -672,7 +673,7 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     const scene::Object* blocker =
         accel_.occluder({origin, dir, context.time}, 0.0, remaining, RayKind::shadow);
     if (!blocker) return light;
-    if (cached) *cached = cacheable_blocker(blocker);
+    if (cached) *cached = {cacheable_blocker(blocker), true};
     return Color(0);
   }
   // Media inside the solids crossed thin the light whatever the light's media flags (POV-Ray 3.7 trace.cpp,
@@ -688,7 +689,7 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     const math::Ray ray{origin, dir, context.time};
     if (const scene::Object* blocker =
             shadow_split_->opaque().occluder(ray, 0.0, remaining, RayKind::shadow)) {
-      if (cached) *cached = cacheable_blocker(blocker);
+      if (cached) *cached = {cacheable_blocker(blocker), true};  // from the opaque objects
       return Color(0);
     }
     walked = &shadow_split_->passing();
@@ -703,7 +704,7 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     const material::Rgbft c = known_opaque ? material::Rgbft{} : pigment_at(hit);
     if (context.observer) context.observer->shadow_blocker(hit, !c.is_transparent());
     if (!c.is_transparent()) {
-      if (cached) *cached = cacheable_blocker(hit);
+      if (cached) *cached = {cacheable_blocker(hit), opaque_shadows_};
       return Color(0);
     }
     if (caustics_ && source && caustics_->replaces_shadow(*source, hit.solid ? *hit.solid : *hit.object))

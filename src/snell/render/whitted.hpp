@@ -91,7 +91,7 @@ class WhittedIntegrator final : public Integrator {
                        const LightRay& toward, const math::Color& colour, TraceContext& context) const;
   /// The shadow cache entry of `source` in this thread's context (TraceContext::shadow_blockers); null
   /// when the ray has no scene light or an observer is watching.
-  const scene::Object** cached_blocker(const scene::Light* source, TraceContext& context) const;
+  TraceContext::ShadowBlocker* cached_blocker(const scene::Light* source, TraceContext& context) const;
   /// Light reaching `point` from direction `dir` within `distance`, tinted by transparent blockers.
   math::Color shadow_filter(const math::Vec3& point, const math::Vec3& normal, const math::Vec3& dir,
                             double distance, math::Color light, TraceContext& context,
