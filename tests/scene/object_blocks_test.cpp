@@ -44,7 +44,20 @@ TEST(ObjectBlocksTest, AgreesWithIntersectOnRandomRaysAndWindows) {
   difference->csg = std::make_shared<Csg>(CsgKind::intersection, std::vector<ObjectPtr>{box, hole});
   const auto cone = plain(std::make_shared<geometry::Cone>(Vec3(0, -1, 0), 1.0, Vec3(0, 1, 0), 0.3, false),
                           math::Transform::translate({-0.5, 0.2, 0.3}));
-  const std::vector<ObjectPtr> objects{box, ball, floor, difference, cone};
+  // CSG of every kind, nested, and inverted (Csg::crosses answers these without building hits).
+  const auto csg = [](CsgKind kind, std::vector<ObjectPtr> children, bool inverse = false) {
+    auto o = std::make_shared<Object>();
+    o->texture = material::Texture::default_texture();
+    o->csg = std::make_shared<Csg>(kind, std::move(children));
+    o->flags.inverse = inverse;
+    return o;
+  };
+  const auto merged = csg(CsgKind::merge, {box, ball, cone});
+  const auto joined = csg(CsgKind::union_of, {difference, ball, cone});
+  const auto inverted_union = csg(CsgKind::union_of, {box, ball}, true);
+  const auto nested = csg(CsgKind::intersection, {merged, csg(CsgKind::union_of, {ball, cone})});
+  const std::vector<ObjectPtr> objects{box,    ball,   floor,          difference, cone,
+                                       merged, joined, inverted_union, nested};
 
   math::Pcg32 rng(3, 5);
   int blocked = 0, open = 0;
@@ -61,8 +74,8 @@ TEST(ObjectBlocksTest, AgreesWithIntersectOnRandomRaysAndWindows) {
     }
   }
   // Both answers occur often, so the agreement means something.
-  EXPECT_GT(blocked, 5000);
-  EXPECT_GT(open, 5000);
+  EXPECT_GT(blocked, 10000);
+  EXPECT_GT(open, 10000);
 }
 
 }  // namespace

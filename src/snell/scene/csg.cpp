@@ -180,6 +180,39 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
   return found;
 }
 
+bool Csg::crosses(const math::Ray& ray, double t_min, double t_max, bool inverted) const {
+  const CsgKind kind = surface_kind(inverted);
+  if (!clip_to_bounds(ray, t_min, t_max)) return false;
+  for (size_t i = 0; i < surface_children_; ++i) {
+    if (!may_hit_child(i, ray, t_min, t_max)) continue;
+    const Object& child = *children_[i];
+    const bool plain = !child.csg && !child.motion;
+    if (kind == CsgKind::union_of) {
+      if (plain) {
+        if (child.shape->crosses(child.transform.inverse_ray(ray), t_min, t_max)) return true;
+        continue;
+      }
+      thread_local SurfaceHit scratch;  // nothing below tests crosses again while it is in use
+      if (child.intersect(ray, t_min, t_max, scratch, inverted)) return true;
+      continue;
+    }
+    if (plain) {
+      thread_local geometry::HitList local;  // used up before the next child's test starts
+      local.clear();
+      child.shape->all_hits(child.transform.inverse_ray(ray), t_min, t_max, local);
+      for (const geometry::LocalHit& l : local)
+        if (keeps(kind, i, ray.at(l.t), ray.time)) return true;
+      continue;
+    }
+    ScratchHits scratch;
+    std::vector<SurfaceHit>& hits = scratch.list();
+    child.all_hits(ray, t_min, t_max, hits, inverted);
+    for (const SurfaceHit& h : hits)
+      if (keeps(kind, i, h.point, ray.time)) return true;
+  }
+  return false;
+}
+
 void Csg::all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
                    bool inverted) const {
   const CsgKind kind = surface_kind(inverted);

@@ -35,6 +35,9 @@ class Csg {
   /// (csg.cpp, CSGUnion::Invert), a union keeps only the surfaces that lie in no other child.
   bool intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit& hit,
                  bool inverted = false) const;
+  /// Whether intersect would find a hit (shadow rays): stops at the first kept crossing of any child and
+  /// builds no world-space hit for a plain child.
+  bool crosses(const math::Ray& ray, double t_min, double t_max, bool inverted = false) const;
   /// Every kept hit in (t_min, t_max), appended in increasing t.
   void all_hits(const math::Ray& ray, double t_min, double t_max, std::vector<SurfaceHit>& hits,
                 bool inverted = false) const;

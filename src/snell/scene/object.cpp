@@ -60,7 +60,8 @@ bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& h
 }
 
 bool Object::blocks(const Ray& ray, double t_min, double t_max) const {
-  if (motion || csg) {
+  if (csg && !motion) return csg->crosses(ray, t_min, t_max, flags.inverse);
+  if (motion) {
     // Kept per thread: nothing below tests blocks again while it is in use.
     thread_local SurfaceHit scratch;
     return intersect(ray, t_min, t_max, scratch);
