@@ -230,35 +230,35 @@ class WideBvhBuilder {
         right.push_back(r);
         continue;
       }
+      const uint8_t k = kind(r.primitive);
+      // The sweep saw a reference that ends on the plane on one side only: that one is always cut.
+      if (nl[k] > 0 && nr[k] > 0) {
+        // Costs up to the common factor (the children's leaf costs per area, counts as the sweep had them).
+        KindCounts nl_less = nl, nr_less = nr;
+        --nl_less[k];
+        --nr_less[k];
+        const double cut = left_box.surface_area() * leaf_cost(nl) + right_box.surface_area() * leaf_cost(nr);
+        const double whole_left = Bounds3(left_box).unite(r.box).surface_area() * leaf_cost(nl) +
+                                  right_box.surface_area() * leaf_cost(nr_less);
+        const double whole_right = left_box.surface_area() * leaf_cost(nl_less) +
+                                   Bounds3(right_box).unite(r.box).surface_area() * leaf_cost(nr);
+        if (whole_left < cut && whole_left <= whole_right) {
+          left.push_back(r);
+          left_box.unite(r.box);
+          nr = nr_less;
+          continue;
+        }
+        if (whole_right < cut) {
+          right.push_back(r);
+          right_box.unite(r.box);
+          nl = nl_less;
+          continue;
+        }
+      }
       const Bounds3 l = clipped(r, s.axis, -math::kInfinity, s.position);
       const Bounds3 h = clipped(r, s.axis, s.position, math::kInfinity);
-      const uint8_t k = kind(r.primitive);
-      if (nl[k] == 0 || nr[k] == 0) {  // the sweep saw it on one side only (it ends on the plane)
-        if (!l.empty()) left.push_back({l, r.primitive});
-        if (!h.empty()) right.push_back({h, r.primitive});
-        continue;
-      }
-      // Costs up to the common factor (the children's leaf costs per area, counts as the sweep had them).
-      KindCounts nl_less = nl, nr_less = nr;
-      --nl_less[k];
-      --nr_less[k];
-      const double cut = left_box.surface_area() * leaf_cost(nl) + right_box.surface_area() * leaf_cost(nr);
-      const double whole_left = Bounds3(left_box).unite(r.box).surface_area() * leaf_cost(nl) +
-                                right_box.surface_area() * leaf_cost(nr_less);
-      const double whole_right = left_box.surface_area() * leaf_cost(nl_less) +
-                                 Bounds3(right_box).unite(r.box).surface_area() * leaf_cost(nr);
-      if (whole_left < cut && whole_left <= whole_right) {
-        left.push_back(r);
-        left_box.unite(r.box);
-        nr = nr_less;
-      } else if (whole_right < cut) {
-        right.push_back(r);
-        right_box.unite(r.box);
-        nl = nl_less;
-      } else {
-        if (!l.empty()) left.push_back({l, r.primitive});
-        if (!h.empty()) right.push_back({h, r.primitive});
-      }
+      if (!l.empty()) left.push_back({l, r.primitive});
+      if (!h.empty()) right.push_back({h, r.primitive});
     }
   }
 
