@@ -91,12 +91,6 @@ std::array<double, 4> CurveSegment::against_line(Vec2 n, double k) const {
   return {n.u * d.u + n.v * d.v + k, n.u * c.u + n.v * c.v, n.u * b.u + n.v * b.v, n.u * a.u + n.v * a.v};
 }
 
-bool CurveSegment::line_may_cross(Vec2 n, double k) const {
-  const double v0 = n.u * lo.u + n.v * lo.v + k, v1 = n.u * hi.u + n.v * lo.v + k;
-  const double v2 = n.u * lo.u + n.v * hi.v + k, v3 = n.u * hi.u + n.v * hi.v + k;
-  return std::min({v0, v1, v2, v3}) <= 0 && std::max({v0, v1, v2, v3}) >= 0;
-}
-
 CurveSegment line_segment(Vec2 p, Vec2 q) {
   return from_coefficients({}, {}, q - p, p);
 }

@@ -3,6 +3,7 @@
 // lathe and text outlines use them. The point lists follow POV-Ray 3.7's rules (reference, "Prism" and
 // "Lathe"): a quadratic piece between P[i+1] and P[i+2] takes P[i] as its control point, a cubic
 // (Catmull-Rom) piece also P[i+3], a Bezier piece is four points P[i..i+3].
+#include <algorithm>
 #include <array>
 #include <span>
 #include <vector>
@@ -28,6 +29,18 @@ struct CurveSegment {
   /// Whether the line n . q + k = 0 can cross the bounding rectangle.
   bool line_may_cross(Vec2 n, double k) const;
 };
+
+/// Whether the line n . q + k = 0 can cross the rectangle [lo, hi]: some corner on or below it, some on or
+/// above it.
+inline bool line_may_cross_rectangle(Vec2 lo, Vec2 hi, Vec2 n, double k) {
+  const double v0 = n.u * lo.u + n.v * lo.v + k, v1 = n.u * hi.u + n.v * lo.v + k;
+  const double v2 = n.u * lo.u + n.v * hi.v + k, v3 = n.u * hi.u + n.v * hi.v + k;
+  return std::min({v0, v1, v2, v3}) <= 0 && std::max({v0, v1, v2, v3}) >= 0;
+}
+
+inline bool CurveSegment::line_may_cross(Vec2 n, double k) const {
+  return line_may_cross_rectangle(lo, hi, n, k);
+}
 
 /// A straight piece from p to q.
 CurveSegment line_segment(Vec2 p, Vec2 q);

@@ -28,7 +28,7 @@ class PieceTree {
     while (top > 0) {
       const Node& node = nodes_[stack[--top]];
       if (node.hi.u < lo.u || node.lo.u > hi.u || node.hi.v < lo.v || node.lo.v > hi.v) continue;
-      if (!line_may_cross(node, n, k)) continue;
+      if (!line_may_cross_rectangle(node.lo, node.hi, n, k)) continue;
       if (node.count > 0) {
         for (uint32_t i = node.first; i < node.first + node.count; ++i) f(order_[i]);
         continue;
@@ -48,13 +48,6 @@ class PieceTree {
   /// holds one pending sibling per level.
   static constexpr int kMaxDepth = 40;
 
-  static bool line_may_cross(const Node& node, Vec2 n, double k) {
-    const double v0 = n.u * node.lo.u + n.v * node.lo.v + k, v1 = n.u * node.hi.u + n.v * node.lo.v + k;
-    const double v2 = n.u * node.lo.u + n.v * node.hi.v + k, v3 = n.u * node.hi.u + n.v * node.hi.v + k;
-    const bool below = v0 <= 0 || v1 <= 0 || v2 <= 0 || v3 <= 0;
-    const bool above = v0 >= 0 || v1 >= 0 || v2 >= 0 || v3 >= 0;
-    return below && above;
-  }
   void build(uint32_t node, uint32_t begin, uint32_t end, std::span<const CurveSegment> pieces);
 
   std::vector<Node> nodes_;
