@@ -192,7 +192,12 @@ bool Csg::crosses(const math::Ray& ray, double t_min, double t_max, bool inverte
         if (child.shape->crosses(child.transform.inverse_ray(ray), t_min, t_max)) return true;
         continue;
       }
-      thread_local SurfaceHit scratch;  // nothing below tests crosses again while it is in use
+      // A CSG child answers alike (its inversion composed as Object::intersect_still composes it).
+      if (!child.motion) {
+        if (child.csg->crosses(ray, t_min, t_max, inverted != child.flags.inverse)) return true;
+        continue;
+      }
+      thread_local SurfaceHit scratch;  // Object::intersect calls no crosses while it is in use
       if (child.intersect(ray, t_min, t_max, scratch, inverted)) return true;
       continue;
     }
