@@ -17,21 +17,20 @@ bool stops_all_light(const scene::Object& object) {
 }
 
 std::unique_ptr<ShadowSplit> ShadowSplit::make(const scene::Scene& scene, const accel::Accelerator& main) {
-  size_t opaque = 0;
-  for (const auto& o : scene.objects) opaque += stops_all_light(*o);
-  if (opaque == 0 || opaque == scene.objects.size()) return nullptr;
   const accel::AcceleratorStats stats = main.stats();
   if (stats.objects + stats.native_triangles > kMaxPrimitives) return nullptr;
-  return std::unique_ptr<ShadowSplit>(new ShadowSplit(scene, main));
+  Objects opaque, passing;
+  for (const auto& o : scene.objects) (stops_all_light(*o) ? opaque : passing).push_back(o);
+  if (opaque.empty() || passing.empty()) return nullptr;
+  return std::unique_ptr<ShadowSplit>(new ShadowSplit(scene, main, std::move(opaque), std::move(passing)));
 }
 
-ShadowSplit::ShadowSplit(const scene::Scene& scene, const accel::Accelerator& main)
+ShadowSplit::ShadowSplit(const scene::Scene& scene, const accel::Accelerator& main, Objects opaque,
+                         Objects passing)
     : opaque_scene_(scene), passing_scene_(scene) {
   const auto start = std::chrono::steady_clock::now();
-  opaque_scene_.objects.clear();
-  passing_scene_.objects.clear();
-  for (const auto& o : scene.objects)
-    (stops_all_light(*o) ? opaque_scene_ : passing_scene_).objects.push_back(o);
+  opaque_scene_.objects = std::move(opaque);
+  passing_scene_.objects = std::move(passing);
   opaque_accel_ = accel::make_accelerator(main.name(), opaque_scene_);
   passing_accel_ = accel::make_accelerator(main.name(), passing_scene_);
   build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

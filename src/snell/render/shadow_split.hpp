@@ -8,6 +8,8 @@
 // the split every shadow ray walked the nearest crossings of the whole scene (benchmark.pov: the opaque
 // sockets and text behind its cloud shell).
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "snell/accel/accelerator.hpp"
 #include "snell/scene/scene.hpp"
@@ -34,7 +36,8 @@ class ShadowSplit {
   static constexpr size_t kMaxPrimitives = 4'000'000;
 
  private:
-  ShadowSplit(const scene::Scene& scene, const accel::Accelerator& main);
+  using Objects = std::vector<std::shared_ptr<const scene::Object>>;
+  ShadowSplit(const scene::Scene& scene, const accel::Accelerator& main, Objects opaque, Objects passing);
 
   scene::Scene opaque_scene_, passing_scene_;
   std::unique_ptr<accel::Accelerator> opaque_accel_, passing_accel_;
