@@ -704,7 +704,8 @@ Color WhittedIntegrator::shadow_filter(const Vec3& point, const Vec3& normal, co
     const material::Rgbft c = known_opaque ? material::Rgbft{} : pigment_at(hit);
     if (context.observer) context.observer->shadow_blocker(hit, !c.is_transparent());
     if (!c.is_transparent()) {
-      if (cached) *cached = {cacheable_blocker(hit), opaque_shadows_};
+      // May let light through elsewhere (the split's walk meets only such objects): tested with its hit.
+      if (cached) *cached = {cacheable_blocker(hit), false};
       return Color(0);
     }
     if (caustics_ && source && caustics_->replaces_shadow(*source, hit.solid ? *hit.solid : *hit.object))
