@@ -102,8 +102,8 @@ int broadcast_from_lead(int value) {
 
 void abort_all(int code) {
   // No MPI_Abort: called from a render thread while rank 0's frame queue may be inside MPI on another (the
-  // library is initialised MPI_THREAD_SERIALIZED), it crashed now and then (exit 139 in a loaded ctest run). A rank that
-  // exits before MPI_Finalize makes mpirun end the job with that rank's exit code.
+  // library is initialised MPI_THREAD_SERIALIZED), it crashed now and then (exit 139 in a loaded ctest run).
+  // A rank that exits before MPI_Finalize makes mpirun end the job with that rank's exit code.
   if (size() > 1) {
     std::fflush(nullptr);
     std::_Exit(code);
