@@ -6,8 +6,8 @@
 // multiplicity. See polynomial.cpp for the references.
 #include <array>
 #include <cmath>
-#include <utility>
 #include <span>
+#include <utility>
 
 namespace snell::geometry {
 
