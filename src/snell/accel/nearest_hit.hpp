@@ -19,6 +19,11 @@ struct PlainTriangle {
   const geometry::Triangle* shape = nullptr;
   const math::Transform* transform = nullptr;
   std::array<math::Vec3, 3> vertices{};
+  /// Whether the shape has vertex normals (only then does the final hit read the shape), and the
+  /// object's `inverse` flag: copies, so that building the final hit reads neither the shape nor the object
+  /// (each a cache miss in a large scene).
+  bool smooth = false;
+  bool inverse = false;
 };
 
 PlainTriangle plain_triangle(const scene::Object& object);
@@ -28,7 +33,7 @@ std::vector<PlainTriangle> plain_triangles(const std::vector<const scene::Object
 class NearestHit {
  public:
   NearestHit(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind, scene::SurfaceHit& hit)
-      : ray_(ray), t_min_(t_min), t_max_(t_max), window_end_(t_max), kind_(kind), hit_(hit) {}
+      : ray_(ray), t_min_(t_min), t_max_(t_max), kind_(kind), hit_(hit) {}
 
   double t_min() const { return t_min_; }
   double t_max() const { return t_max_; }
@@ -72,6 +77,8 @@ class NearestHit {
     if (!hit) return false;
     t_max_ = crossing.t;
     triangle_ = triangle.object;
+    plain_ = &triangle;
+    crossing_ = crossing;
     found_ = true;
     return true;
   }
@@ -79,10 +86,19 @@ class NearestHit {
   /// The object of the nearest hit so far, or null.
   const scene::Object* object() const { return !found_ ? nullptr : triangle_ ? triangle_ : hit_.object; }
 
-  /// Whether anything was hit; a triangle found last gets its SurfaceHit built now.
+  /// Whether anything was hit; a triangle found last gets its SurfaceHit built now, from the crossing
+  /// already found: what Object::intersect would build for a plain triangle (Object::intersect_still: the
+  /// shape's hit of the ray moved into object space, which is the ray test_triangle tested, taken to world
+  /// space), without testing the triangle again (that test and its object's dispatch were a fifth of a
+  /// random ray's time through 100k triangles, docs/benchmark.md).
   bool finish() {
-    // The same test over a window that holds the crossing found: Object::intersect finds it again.
-    if (triangle_ && !triangle_->intersect(ray_, t_min_, window_end_, hit_)) return false;
+    if (triangle_) {
+      static const math::Transform identity;
+      hit_ = scene::Object::placed_hit(
+          *triangle_, plain_->transform ? *plain_->transform : identity, plain_->inverse, ray_,
+          plain_->smooth ? plain_->shape->local_hit(crossing_)
+                         : geometry::Triangle::flat_hit(plain_->vertices, crossing_));
+    }
     return found_;
   }
 
@@ -90,10 +106,13 @@ class NearestHit {
   const math::Ray& ray_;
   double t_min_;
   double t_max_;
-  double window_end_;
   scene::RayKind kind_;
   scene::SurfaceHit& hit_;
   const scene::Object* triangle_ = nullptr;
+  /// The record and crossing of the plain triangle triangle_ (valid while triangle_ is one; the record
+  /// lives in the accelerator, which outlives the query).
+  const PlainTriangle* plain_ = nullptr;
+  geometry::TriangleHit crossing_{};
   bool found_ = false;
 };
 

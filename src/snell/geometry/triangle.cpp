@@ -28,14 +28,24 @@ Bounds3 Triangle::bounds() const {
 bool Triangle::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
   TriangleHit th;
   if (!crossing(ray, t_min, t_max, th)) return false;
-  hit = LocalHit{};
-  hit.t = th.t;
-  hit.normal = normalize(cross(v_[1] - v_[0], v_[2] - v_[0]));
+  hit = local_hit(th);
+  return true;
+}
+
+LocalHit Triangle::local_hit(const TriangleHit& th) const {
+  LocalHit hit = flat_hit(v_, th);
   if (smooth_) {
     hit.shading_normal = normalize((1 - th.b1 - th.b2) * n_[0] + th.b1 * n_[1] + th.b2 * n_[2]);
   }
+  return hit;
+}
+
+LocalHit Triangle::flat_hit(const std::array<Vec3, 3>& v, const TriangleHit& th) {
+  LocalHit hit;
+  hit.t = th.t;
+  hit.normal = normalize(cross(v[1] - v[0], v[2] - v[0]));
   hit.uv = {th.b1, th.b2};
-  return true;
+  return hit;
 }
 
 void Triangle::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {

@@ -24,6 +24,13 @@ class Triangle final : public Shape {
   bool crossing(const Ray& ray, double t_min, double t_max, TriangleHit& out) const {
     return intersect_triangle(v_[0], v_[1], v_[2], ray, t_min, t_max, out);
   }
+  /// The hit intersect() reports for a crossing found by crossing() (so an accelerator that found it
+  /// need not test the triangle again).
+  LocalHit local_hit(const TriangleHit& crossing) const;
+  /// local_hit of a triangle without vertex normals, from its vertices alone (an accelerator holding a
+  /// copy of them need not read the shape).
+  static LocalHit flat_hit(const std::array<Vec3, 3>& vertices, const TriangleHit& crossing);
+  bool smooth() const { return smooth_; }
 
  private:
   std::array<Vec3, 3> v_;

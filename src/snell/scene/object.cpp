@@ -30,20 +30,21 @@ void Object::bake_placement() {
   }
 }
 
-SurfaceHit Object::to_world(const Ray& world_ray, const geometry::LocalHit& local) const {
+SurfaceHit Object::placed_hit(const Object& object, const math::Transform& transform, bool inverse,
+                              const Ray& world_ray, const geometry::LocalHit& local) {
   SurfaceHit hit;
   hit.t = local.t;
   hit.point = world_ray.at(local.t);
   hit.normal = normalize(transform.normal(local.normal));
-  if (flags.inverse) hit.normal = -hit.normal;
+  if (inverse) hit.normal = -hit.normal;
   hit.shading_normal = length_squared(local.shading_normal) > 0
                            ? normalize(transform.normal(local.shading_normal))
                            : hit.normal;
-  if (flags.inverse && length_squared(local.shading_normal) > 0) hit.shading_normal = -hit.shading_normal;
+  if (inverse && length_squared(local.shading_normal) > 0) hit.shading_normal = -hit.shading_normal;
   hit.uv = local.uv;
   hit.texture_point = hit.point;
-  hit.object = this;
-  hit.solid = this;
+  hit.object = &object;
+  hit.solid = &object;
   hit.part = local.part;
   return hit;
 }

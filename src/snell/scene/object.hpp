@@ -121,7 +121,13 @@ struct Object {
   /// (Shape::placed), so that no ray has to be moved into the object's space; moving objects keep it.
   void bake_placement();
   /// Builds the world-space hit from a shape-space hit of `world_ray` (transformed into object space).
-  SurfaceHit to_world(const Ray& world_ray, const geometry::LocalHit& local) const;
+  SurfaceHit to_world(const Ray& world_ray, const geometry::LocalHit& local) const {
+    return placed_hit(*this, transform, flags.inverse, world_ray, local);
+  }
+  /// to_world of `object` given its transform and inverse flag (for callers that keep copies of them
+  /// beside the object, and so need not read it: an accelerator's nearest triangle).
+  static SurfaceHit placed_hit(const Object& object, const math::Transform& transform, bool inverse,
+                               const Ray& world_ray, const geometry::LocalHit& local);
 };
 
 }  // namespace snell::scene
