@@ -83,8 +83,11 @@ void check_never_drops_a_hit(uint64_t seed) {
     const Vec3 unit = normalize(dir);
     // Directions of any length: rays reach shapes in object space unnormalised.
     const Ray ray{target - unit * distance, unit * uniform(rng, 0.01, 100), 0};
-    const double t_min = trial % 3 == 0 ? 0.0 : uniform(rng, 0, 1) * distance / length(ray.direction);
-    const double t_max = trial % 5 == 0 ? distance / length(ray.direction) : INFINITY;
+    const double reach = distance / length(ray.direction);
+    double t_min = trial % 3 == 0 ? 0.0 : uniform(rng, 0, 1) * reach;
+    const double t_max = trial % 5 == 0 ? reach : INFINITY;
+    // Windows that start right at the aimed hit, as a shadow ray's starts at the surface it leaves.
+    if (trial % 13 == 1) t_min = reach * (1 + uniform(rng, -1, 1) * std::pow(2.0, -uniform(rng, 10, 50)));
     const TriangleRay triangle_ray(ray);
     float entry[TriangleBlock::kSize];
     const unsigned kept = triangle_ray.candidates<L>(t.block, snell::geometry::float_below(t_min),
