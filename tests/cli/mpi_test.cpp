@@ -65,16 +65,21 @@ TEST_F(MpiTest, ThreeRanksRenderAConformanceSceneExactlyAsOneProcess) {
 TEST_F(MpiTest, AKilledRankEndsTheJobWithAnErrorNotAHang) {
   const fs::path scene = fs::path(SNELL_SOURCE_DIR) / "scenes/showcase.pov";
   const fs::path pid_file = dir_ / "mpirun.pid";
-  // Large enough to be still rendering when a rank is killed; `timeout` turns a hang into exit code 124.
+  // Far larger than a rank can finish before it is killed (about 13 s on a 2-core machine where the kill
+  // comes within 1.5 s of the ranks starting; a fixed wait of 4 s once outlasted a 1600x1200 render);
+  // `timeout` turns a hang into exit code 124.
   const std::string command = "timeout -k 10 120 " + kMpirun + SNELL_BINARY + " +I" + scene.string() +
-                              " +W1600 +H1200 +A0.1 --quiet +O" + (dir_ / "out.png").string() +
+                              " +W3200 +H2400 +A0.1 --quiet +O" + (dir_ / "out.png").string() +
                               " & echo $! > " + pid_file.string() + "; wait $!";
+  // Anchored at the binary: only the ranks' command lines start with it (not mpirun's or the shells').
+  const std::string ranks = "'^" + std::string(SNELL_BINARY) + " .*" + (dir_ / "out.png").string() + "'";
   std::thread killer([&] {
-    // Wait for the ranks (children of mpirun) to start rendering, then kill one.
-    std::this_thread::sleep_for(std::chrono::seconds(4));
-    // Anchored at the binary: only the ranks' command lines start with it (not mpirun's or the shells').
-    test::run_command("pkill -KILL -n -f '^" + std::string(SNELL_BINARY) + " .*" +
-                      (dir_ / "out.png").string() + "'");
+    // Wait for the ranks (children of mpirun) to start, give them a moment to begin rendering, then kill
+    // one.
+    for (int i = 0; i < 600 && test::run_command("pgrep -f " + ranks).code != 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    test::run_command("pkill -KILL -n -f " + ranks);
   });
   const auto r = test::run_command(command);
   killer.join();
