@@ -131,6 +131,26 @@ TEST(MeshTest, LargeMeshAgreesWithBruteForce) {
               std::chrono::duration<double>(t0 - start).count(), secs);
 }
 
+// crosses (an any-hit walk in no particular order, for shadow rays) finds a crossing exactly when intersect
+// does, over windows that end before, between and after a ray's crossings, from inside and outside.
+TEST(MeshTest, CrossesAgreesWithIntersectOverAnyWindow) {
+  const Mesh mesh(sphere_mesh(40, 30));
+  snell::math::Pcg32 rng(11);
+  int crossed = 0, missed = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const Vec3 o = (i % 2 ? 0.5 : 3.0) * shape_checks::random_unit(rng);
+    const Ray ray{o, shape_checks::random_unit(rng) * (0.5 + rng.next_double()), 0};
+    const double t_min = i % 3 == 0 ? 1e-9 : 4 * rng.next_double();
+    const double t_max = i % 5 == 0 ? kInfinity : t_min + 4 * rng.next_double();
+    LocalHit hit;
+    const bool expected = mesh.intersect(ray, t_min, t_max, hit);
+    ASSERT_EQ(mesh.crosses(ray, t_min, t_max), expected) << "ray " << i;
+    (expected ? crossed : missed) += 1;
+  }
+  EXPECT_GT(crossed, 500);
+  EXPECT_GT(missed, 500);
+}
+
 TEST(MeshTest, RayThroughASharedEdgeReportsTheLowestNumberedFace) {
   // A flat 20 x 20 grid of squares cut into triangles, faces numbered in shuffled order; rays straight down
   // through edge midpoints and grid vertices meet two or more faces at t = 1 exactly. The face reported

@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <chrono>
+#include <type_traits>
 
 #include "snell/accel/indexed_objects.hpp"
 
@@ -125,7 +126,9 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
     if (label & kTriangleLeaf)
       geometry::prefetch_lines(&blocks_[label & ~kTriangleLeaf], sizeof(geometry::TriangleBlock));
   };
-  tally.add(tree_.walk<L>(ray, nearest.t_min(), nearest.t_max(), leaf, prefetch));
+  // An occlusion query (done() always true) takes any hit: its walk needs no order.
+  constexpr bool any_hit = std::decay_t<Done>{}();
+  tally.add(tree_.walk<L, !any_hit>(ray, nearest.t_min(), nearest.t_max(), leaf, prefetch));
   return nearest.object() != nullptr;
 }
 

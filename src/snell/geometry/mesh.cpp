@@ -141,6 +141,18 @@ bool Mesh::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) 
   return true;
 }
 
+bool Mesh::crosses(const Ray& ray, double t_min, double t_max) const {
+  bool crossed = false;
+  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {
+    tree().walk<L, false>(ray, t_min, t_max, [&](uint32_t face, double&) {
+      TriangleHit th;
+      crossed = crossing(static_cast<int>(face), ray, t_min, t_max, th);
+      return crossed;
+    });
+  });
+  return crossed;
+}
+
 void Mesh::all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const {
   const size_t first = hits.size();
   math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {

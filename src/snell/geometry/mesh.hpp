@@ -40,6 +40,8 @@ class Mesh final : public Shape {
 
   Bounds3 bounds() const override;
   bool intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const override;
+  /// Any face's crossing, found by a walk in no particular order that stops at the first.
+  bool crosses(const Ray& ray, double t_min, double t_max) const override;
   void all_hits(const Ray& ray, double t_min, double t_max, HitList& hits) const override;
   bool inside(const Vec3& p) const override;
   std::string_view kind() const override { return "mesh"; }

@@ -5,6 +5,7 @@
 #include <array>
 #include <bit>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "snell/geometry/triangle_block.hpp"
@@ -21,8 +22,10 @@ class TriangleTree {
   size_t node_count() const { return bvh_.node_count(); }
 
   /// Calls visit(triangle, t_max) for each triangle that may be hit within [t_min, t_max]; `visit` may
-  /// lower t_max. L lanes per instruction (math/float_lanes.hpp).
-  template <int L, class Visit>
+  /// lower t_max, and a `visit` that returns bool ends the walk by returning true. With kOrdered false the
+  /// leaves come in no particular order (for queries that take any hit: WideBvh::walk). L lanes per
+  /// instruction (math/float_lanes.hpp).
+  template <int L, bool kOrdered = true, class Visit>
   SNELL_LANES_INLINE void walk(const math::Ray& ray, double t_min, double t_max, Visit&& visit) const {
     const TriangleRay::Lanes<L> triangle_ray{TriangleRay(ray)};
     const float low = float_below(t_min);
@@ -39,14 +42,18 @@ class TriangleTree {
       for (unsigned m = triangle_ray.candidates(b, low, high, entry); m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > t) continue;
-        visit(b.id[lane], t);
+        if constexpr (std::is_same_v<decltype(visit(b.id[lane], t)), bool>) {
+          if (visit(b.id[lane], t)) return true;
+        } else {
+          visit(b.id[lane], t);
+        }
       }
       return false;
     };
     const auto prefetch = [&](uint32_t block) __attribute__((always_inline)) {
       prefetch_lines(&blocks_[block], sizeof(TriangleBlock));
     };
-    bvh_.walk<L>(ray, t_min, t_max, leaf, prefetch);
+    bvh_.walk<L, kOrdered>(ray, t_min, t_max, leaf, prefetch);
   }
 
  private:

@@ -87,11 +87,14 @@ class WideBvh {
 
   /// Calls leaf(label, count, t_max) for the leaves whose box the ray may enter within [t_min, t_max],
   /// nearest box first; `leaf` may lower t_max (later boxes are culled against it), and returning true
-  /// ends the walk. L box tests per instruction (math/float_lanes.hpp). prefetch_leaf(label) is called for
-  /// each leaf as it is queued, and the tree prefetches queued nodes likewise: a walk over a tree larger
-  /// than the caches waits mostly on memory, and a queued child's lines then arrive while its siblings are
-  /// tested (random rays through 100k triangles: about 1.3x the rays per second). Returns the nodes visited.
-  template <int L, class Leaf, class PrefetchLeaf>
+  /// ends the walk. With kOrdered false the children are walked in no particular order (occlusion
+  /// queries, which take any hit: the sort of each node's children only costs there, and shadow rays
+  /// through 100k triangles ran 1.36x faster without it). L box tests per instruction (math/float_lanes.hpp).
+  /// prefetch_leaf(label) is called for each leaf as it is queued, and the tree prefetches queued nodes
+  /// likewise: a walk over a tree larger than the caches waits mostly on memory, and a queued child's lines
+  /// then arrive while its siblings are tested (random rays through 100k triangles: about 1.3x the rays per
+  /// second). Returns the nodes visited.
+  template <int L, bool kOrdered = true, class Leaf, class PrefetchLeaf>
   SNELL_LANES_INLINE size_t walk(const math::Ray& ray, double t_min, double t_max, Leaf& leaf,
                                  PrefetchLeaf& prefetch_leaf) const {
     if (order_.empty() || !(t_min < t_max)) return 0;
@@ -102,8 +105,8 @@ class WideBvh {
     // per instruction), else double.
     const FloatSlabs float_slabs(ray);
     return float_slabs.usable() && t_min >= 0
-               ? walk_with<L>(float_slabs, entry, t_min, t_max, leaf, prefetch_leaf)
-               : walk_with<L>(DoubleSlabs(ray), entry, t_min, t_max, leaf, prefetch_leaf);
+               ? walk_with<L, kOrdered>(float_slabs, entry, t_min, t_max, leaf, prefetch_leaf)
+               : walk_with<L, kOrdered>(DoubleSlabs(ray), entry, t_min, t_max, leaf, prefetch_leaf);
   }
 
  private:
@@ -116,9 +119,9 @@ class WideBvh {
   friend class WideBvhBuilder;
 
   /// The walk over the wide nodes with the box test of `Slabs` (FloatSlabs or DoubleSlabs). Children hit
-  /// are pushed farthest first, so the nearest is walked next; a pending child is skipped when a hit nearer
-  /// than its entry has been found meanwhile.
-  template <int L, class Slabs, class Leaf, class PrefetchLeaf>
+  /// are pushed farthest first (kOrdered), so the nearest is walked next; a pending child is skipped when a
+  /// hit nearer than its entry has been found meanwhile.
+  template <int L, bool kOrdered, class Slabs, class Leaf, class PrefetchLeaf>
   SNELL_LANES_INLINE size_t walk_with(const Slabs& slabs, double root_entry, double t_min, double t_max,
                                       Leaf& leaf, PrefetchLeaf& prefetch_leaf) const {
     using Real = typename Slabs::Real;
@@ -161,7 +164,8 @@ class WideBvh {
         const int k = std::countr_zero(static_cast<unsigned>(mask));
         if (node.child[k] == kNoChild) continue;
         int j = n++;
-        for (; j > 0 && hits[j - 1].entry < entry[k]; --j) hits[j] = hits[j - 1];
+        if constexpr (kOrdered)
+          for (; j > 0 && hits[j - 1].entry < entry[k]; --j) hits[j] = hits[j - 1];
         hits[j] = {node.child[k], node.count[k], entry[k]};
         if (node.count[k] > 0)
           prefetch_leaf(node.child[k]);
