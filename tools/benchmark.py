@@ -169,6 +169,19 @@ def scene_table(results, summary=True):
     return lines
 
 
+NOTES_HEADING = "## Notes on these runs"
+
+
+def kept_notes(out):
+    """The hand-written notes section of an earlier table (from its heading to the end), so that a new run
+    replaces the tables and keeps what people wrote about earlier runs."""
+    if not out.exists():
+        return "\n"
+    text = out.read_text()
+    at = text.find("\n" + NOTES_HEADING)
+    return "\n" if at < 0 else "\n" + text[at:].rstrip("\n") + "\n"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--bin", default="build/snell")
@@ -243,7 +256,7 @@ def main():
         print(bench, flush=True)
         lines += [f"## advanced/benchmark/benchmark.pov ({size[0]}x{size[1]}, +A0.3 +WT2)", ""]
         lines += scene_table([bench], summary=False) + [""]
-        Path(args.out).write_text("\n".join(lines))
+        Path(args.out).write_text("\n".join(lines) + kept_notes(Path(args.out)))
         print(f"benchmark: wrote {args.out}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
