@@ -84,10 +84,7 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
   const math::Ray& ray = nearest.ray();
   const geometry::TriangleRay::Lanes<L> triangle_ray{geometry::TriangleRay(ray)};
   const float t_min = geometry::float_below(nearest.t_min());
-  // The window's end rounded up to float, redone only when a hit lowers it (not per leaf: the rounding was
-  // a twentieth of a random ray's instructions).
-  double rounded_t_max = nearest.t_max();
-  float float_t_max = geometry::float_above(rounded_t_max);
+  geometry::FloatAboveOnChange float_t_max(nearest.t_max());
   const auto leaf = [&](uint32_t label, uint32_t count, double& t_max) __attribute__((always_inline)) {
     bool hit = false;
     if (label & kTriangleLeaf) {
@@ -97,12 +94,8 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
       if (t_query_cost)
         for (uint32_t m = visible; m != 0; m &= m - 1)
           count_object_test(*triangles_[block.id[std::countr_zero(m)]].object);
-      if (t_max != rounded_t_max) {
-        rounded_t_max = t_max;
-        float_t_max = geometry::float_above(t_max);
-      }
       float entry[geometry::TriangleBlock::kSize];
-      uint32_t m = triangle_ray.candidates(block, t_min, float_t_max, entry) & visible;
+      uint32_t m = triangle_ray.candidates(block, t_min, float_t_max(t_max), entry) & visible;
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > nearest.t_max()) continue;

@@ -31,6 +31,24 @@ inline float float_above(double v) {
   return -float_below(-v);
 }
 
+/// float_above of a value that changes seldom (a walk's window end, lowered only by a hit), rounded again
+/// only when it changes: per leaf, the rounding was a twentieth of a random ray's instructions.
+class FloatAboveOnChange {
+ public:
+  explicit FloatAboveOnChange(double v) : v_(v), rounded_(float_above(v)) {}
+  float operator()(double v) {
+    if (v != v_) {
+      v_ = v;
+      rounded_ = float_above(v);
+    }
+    return rounded_;
+  }
+
+ private:
+  double v_;
+  float rounded_;
+};
+
 /// `b` grown by 2^-40 of its magnitude: bounds are computed in double from exact shape boxes, and that
 /// (thousands of ulps) absorbs their rounding, so that culling by the box never drops a hit the double
 /// test finds, without making boxes measurably larger.

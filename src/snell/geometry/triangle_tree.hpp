@@ -29,17 +29,11 @@ class TriangleTree {
   SNELL_LANES_INLINE void walk(const math::Ray& ray, double t_min, double t_max, Visit&& visit) const {
     const TriangleRay::Lanes<L> triangle_ray{TriangleRay(ray)};
     const float low = float_below(t_min);
-    // The window's end rounded up to float, redone only when `visit` lowers it (as in accel/bvh.cpp).
-    double rounded_t = t_max;
-    float high = float_above(t_max);
+    FloatAboveOnChange high(t_max);
     const auto leaf = [&](uint32_t block, uint32_t, double& t) __attribute__((always_inline)) {
       const TriangleBlock& b = blocks_[block];
-      if (t != rounded_t) {
-        rounded_t = t;
-        high = float_above(t);
-      }
       float entry[TriangleBlock::kSize];
-      for (unsigned m = triangle_ray.candidates(b, low, high, entry); m != 0; m &= m - 1) {
+      for (unsigned m = triangle_ray.candidates(b, low, high(t), entry); m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > t) continue;
         if constexpr (std::is_same_v<decltype(visit(b.id[lane], t)), bool>) {
