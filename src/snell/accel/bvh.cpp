@@ -2,7 +2,6 @@
 
 #include <bit>
 #include <chrono>
-#include <type_traits>
 
 #include "snell/accel/indexed_objects.hpp"
 
@@ -78,9 +77,8 @@ Bvh::Bvh(const scene::Scene& scene) {
                            start);
 }
 
-/// The walk with `nearest` testing what the leaves hold; `done()` after a hit ends it (shadow rays).
-template <int L, class Done>
-SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
+template <int L, bool kAnyHit>
+SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
   const math::Ray& ray = nearest.ray();
   const geometry::TriangleRay::Lanes<L> triangle_ray{geometry::TriangleRay(ray)};
   const float t_min = geometry::float_below(nearest.t_min());
@@ -101,27 +99,26 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest, Done&& done) const {
         if (entry[lane] > nearest.t_max()) continue;
         if (nearest.test_triangle(triangles_[block.id[lane]])) {
           hit = true;
-          if (done()) break;
+          if (kAnyHit) break;
         }
       }
     } else {
       for (uint32_t i = label; i < label + count; ++i)
-        if (done() ? nearest.test_blocking(*objects_[i]) : nearest.test_general(*objects_[i])) {
+        if (kAnyHit ? nearest.test_blocking(*objects_[i]) : nearest.test_general(*objects_[i])) {
           hit = true;
-          if (done()) break;
+          if (kAnyHit) break;
         }
     }
     t_max = nearest.t_max();
-    return hit && done();
+    return hit && kAnyHit;
   };
   NodeTally tally;
   const auto prefetch = [&](uint32_t label) __attribute__((always_inline)) {
     if (label & kTriangleLeaf)
       geometry::prefetch_lines(&blocks_[label & ~kTriangleLeaf], sizeof(geometry::TriangleBlock));
   };
-  // An occlusion query (done() always true) takes any hit: its walk needs no order.
-  constexpr bool any_hit = std::decay_t<Done>{}();
-  tally.add(tree_.walk<L, !any_hit>(ray, nearest.t_min(), nearest.t_max(), leaf, prefetch));
+  // An occlusion query takes any hit: its walk needs no order.
+  tally.add(tree_.walk<L, !kAnyHit>(ray, nearest.t_min(), nearest.t_max(), leaf, prefetch));
   return nearest.object() != nullptr;
 }
 
@@ -129,9 +126,7 @@ bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::Ray
                     scene::SurfaceHit& hit) const {
   NearestHit nearest(ray, t_min, t_max, kind, hit);
   for (const scene::Object* o : unbounded_) nearest.test_general(*o);
-  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {
-    return walk<L>(nearest, [] { return false; });
-  });
+  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) { return walk<L, false>(nearest); });
   return nearest.finish();
 }
 
@@ -141,9 +136,7 @@ const scene::Object* Bvh::occluder(const math::Ray& ray, double t_min, double t_
   NearestHit nearest(ray, t_min, t_max, kind, scratch);
   for (const scene::Object* o : unbounded_)
     if (nearest.test_blocking(*o)) return o;
-  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {
-    return walk<L>(nearest, [] { return true; });
-  });
+  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) { return walk<L, true>(nearest); });
   return nearest.object();
 }
 

@@ -29,8 +29,10 @@ class Bvh final : public Accelerator {
   /// A leaf label with this bit names a block of triangles_, else the first of its objects in objects_.
   static constexpr uint32_t kTriangleLeaf = 1u << 31;
 
-  template <int L, class Done>
-  bool walk(NearestHit& nearest, Done&& done) const;
+  /// The walk with `nearest` testing what the leaves hold; kAnyHit (occlusion queries) ends it at the first
+  /// hit.
+  template <int L, bool kAnyHit>
+  bool walk(NearestHit& nearest) const;
 
   geometry::WideBvh tree_;
   std::vector<const scene::Object*> objects_;  // in leaf order
