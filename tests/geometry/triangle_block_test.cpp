@@ -41,7 +41,7 @@ Trial random_block(Pcg32& rng, const Vec3& center, double scale) {
     const Vec3 c = center + uniform_vec(rng, -scale, scale);
     for (Vec3& p : t.v[l]) p = c + uniform_vec(rng, -scale, scale);
     if (l == 5) t.v[l][2] = t.v[l][0] + (t.v[l][1] - t.v[l][0]) * uniform(rng, 0, 1) + Vec3(1e-9 * scale);
-    t.block.add(t.v[l][0], t.v[l][1], t.v[l][2], static_cast<uint32_t>(l));
+    t.block.add(t.v[l][0], t.v[l][1], t.v[l][2]);
   }
   return t;
 }
@@ -118,23 +118,23 @@ TEST(TriangleBlockTest, EightLanesNeverDropAHit) {
 
 TEST(TriangleBlockTest, UnusedLanesAreNeverKept) {
   TriangleBlock b;
-  b.add({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 7);
-  b.add({0, 0, 1}, {1, 0, 1}, {0, 1, 1}, 9);
+  b.add({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  b.add({0, 0, 1}, {1, 0, 1}, {0, 1, 1});
   const TriangleRay ray(Ray{{0.2, 0.2, -1}, {0, 0, 1}, 0});
   float entry[TriangleBlock::kSize];
   EXPECT_EQ(ray.candidates<4>(b, 0, INFINITY, entry), 3u);
   EXPECT_EQ(ray.candidates<4>(b, 0, 1.5f, entry), 1u);  // the second lies at t = 2
   EXPECT_EQ(ray.candidates<8>(b, 2.5f, INFINITY, entry), 0u);
-  EXPECT_EQ(b.id[1], 9u);
+  EXPECT_EQ(b.count, 2u);
 }
 
 TEST(TriangleBlockTest, WhatFloatCannotHoldIsLeftToTheDoubleTest) {
   TriangleBlock huge;
-  huge.add({1e35, 0, 0}, {0, 1e35, 0}, {0, 0, 1}, 0);
+  huge.add({1e35, 0, 0}, {0, 1e35, 0}, {0, 0, 1});
   float entry[TriangleBlock::kSize];
   EXPECT_EQ(TriangleRay(Ray{{5, 5, 5}, {1, 0, 0}, 0}).candidates<4>(huge, 0, INFINITY, entry), 1u);
   TriangleBlock small;
-  small.add({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0);
+  small.add({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   EXPECT_FALSE(TriangleRay(Ray{{1e31, 0, 0}, {1, 0, 0}, 0}).usable());
   EXPECT_FALSE(TriangleRay(Ray{{0, 0, 0}, {0, 0, 0}, 0}).usable());
   EXPECT_EQ(TriangleRay(Ray{{0, 0, 0}, {0, 0, 0}, 0}).candidates<4>(small, 0, INFINITY, entry), 1u);

@@ -56,12 +56,12 @@ Bvh::Bvh(const scene::Scene& scene) {
     const uint32_t primitive = tree_.order()[first];
     if (!plain[primitive].shape) return first;
     geometry::TriangleBlock& block = blocks_.emplace_back();
+    block.first = static_cast<uint32_t>(triangles_.size());
     for (uint32_t i = first; i < first + count; ++i) {
       const PlainTriangle& t = plain[tree_.order()[i]];
       const std::array<math::Vec3, 3>& v = t.vertices;
       const int lane = static_cast<int>(block.count);
-      block.add(world_point(t, v[0]), world_point(t, v[1]), world_point(t, v[2]),
-                static_cast<uint32_t>(triangles_.size()));
+      block.add(world_point(t, v[0]), world_point(t, v[1]), world_point(t, v[2]));
       for (scene::RayKind kind : {scene::RayKind::camera, scene::RayKind::reflection,
                                   scene::RayKind::refraction, scene::RayKind::shadow})
         if (t.object->visible_to(kind)) block.tag |= 1u << (8 * static_cast<int>(kind) + lane);
@@ -91,13 +91,13 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
       ObjectTestCounter::count(static_cast<uint64_t>(std::popcount(visible)));
       if (t_query_cost)
         for (uint32_t m = visible; m != 0; m &= m - 1)
-          count_object_test(*triangles_[block.id[std::countr_zero(m)]].object);
+          count_object_test(*triangles_[block.first + std::countr_zero(m)].object);
       float entry[geometry::TriangleBlock::kSize];
       uint32_t m = triangle_ray.candidates(block, t_min, float_t_max(t_max), entry) & visible;
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > nearest.t_max()) continue;
-        if (nearest.test_triangle(triangles_[block.id[lane]])) {
+        if (nearest.test_triangle(triangles_[block.first + lane])) {
           hit = true;
           if (kAnyHit) break;
         }

@@ -37,8 +37,10 @@
 
 namespace snell::geometry {
 
-/// Six cache lines: the first holds the scalars and ids (read first: the accelerator's ray-kind tag), the
-/// other five the vertices, each row of eight floats 32-byte aligned for whole-register loads.
+/// Five cache lines: the first holds the scalars (read first: the accelerator's ray-kind tag), the other
+/// four and a half the vertices, each row of eight floats 32-byte aligned for whole-register loads. The
+/// triangles are numbered by the owner consecutively (lane l holds triangle first + l), so no ids are
+/// stored: a sixth line per block was a sixth more memory to fetch for each block a ray visits.
 struct alignas(64) TriangleBlock {
   static constexpr int kSize = 8;
   /// Error scales over the block's triangles: the largest |vertex coordinate| and the longest edge
@@ -47,15 +49,15 @@ struct alignas(64) TriangleBlock {
   float longest_edge = 0;
   /// Lanes in use: 0 .. count - 1.
   uint32_t count = 0;
-  /// The owner's number for each triangle (a face, an object), and 32 bits of its own (the accelerator
-  /// keeps which ray kinds see each triangle).
+  /// 32 bits of the owner's (the accelerator keeps which ray kinds see each triangle).
   uint32_t tag = 0;
-  uint32_t id[kSize] = {};
+  /// The owner's number of the triangle in lane 0.
+  uint32_t first = 0;
   /// Vertex k's coordinate a of triangle l is v[k][a][l], rounded to the nearest float.
-  alignas(64) float v[3][3][kSize] = {};
+  alignas(32) float v[3][3][kSize] = {};
 
-  /// Puts triangle (a, b, c) in the next lane.
-  void add(const math::Vec3& a, const math::Vec3& b, const math::Vec3& c, uint32_t triangle_id) {
+  /// Puts triangle (a, b, c) in the next lane: the owner's triangle first + count.
+  void add(const math::Vec3& a, const math::Vec3& b, const math::Vec3& c) {
     const math::Vec3* vertex[3] = {&a, &b, &c};
     const int lane = static_cast<int>(count++);
     for (int k = 0; k < 3; ++k) {
@@ -67,9 +69,10 @@ struct alignas(64) TriangleBlock {
       const double edge = length(*vertex[(k + 1) % 3] - *vertex[k]);
       longest_edge = std::max(longest_edge, edge < 1e30 ? float_above(edge) : INFINITY);
     }
-    id[lane] = triangle_id;
   }
 };
+
+static_assert(sizeof(TriangleBlock) == 5 * 64, "five cache lines");
 
 /// One ray prepared for TriangleBlock tests: its largest axis, shear and origin in float.
 class TriangleRay {
@@ -162,10 +165,13 @@ class TriangleRay {
         const F s = (F)((M)x[0] & INT32_MAX) + (F)((M)y[0] & INT32_MAX) + (F)((M)x[1] & INT32_MAX) +
                     (F)((M)y[1] & INT32_MAX) + (F)((M)x[2] & INT32_MAX) + (F)((M)y[2] & INT32_MAX);
         const F bound = s * (shear_error + u * s) + edge_constant;
-        const F minus_bound = -bound;
-        // Some function clearly negative and some clearly positive: the exact ones cannot share a sign.
-        const M negative = (e_u < minus_bound) | (e_v < minus_bound) | (e_w < minus_bound);
-        const M positive = (e_u > bound) | (e_v > bound) | (e_w > bound);
+        // Some function clearly negative and some clearly positive: the exact ones cannot share a sign
+        // (the least below -bound and the greatest above it: four minps / maxps instead of six compares
+        // and four ors).
+        const F least_uv = e_u < e_v ? e_u : e_v, greatest_uv = e_u < e_v ? e_v : e_u;
+        const F least = e_w < least_uv ? e_w : least_uv, greatest = e_w < greatest_uv ? greatest_uv : e_w;
+        const M negative = least < -bound;
+        const M positive = greatest > bound;
         const F det = e_u + e_v + e_w;
         const M edge_on = (F)((M)det & INT32_MAX) <= s * s * 0x1p-20f + 3 * bound;
         const F near = z[0] < z[1] ? z[0] : z[1], far = z[0] < z[1] ? z[1] : z[0];

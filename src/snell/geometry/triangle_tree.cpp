@@ -30,9 +30,10 @@ TriangleTree::TriangleTree(std::span<const math::Vec3> vertices, std::span<const
   bvh_ = WideBvh(input);
   bvh_.relabel_leaves([&](uint32_t first, uint32_t count) {
     TriangleBlock& block = blocks_.emplace_back();
+    block.first = first;
     for (uint32_t i = first; i < first + count; ++i) {
       const uint32_t f = bvh_.order()[i];
-      block.add(vertices[faces[f][0]], vertices[faces[f][1]], vertices[faces[f][2]], f);
+      block.add(vertices[faces[f][0]], vertices[faces[f][1]], vertices[faces[f][2]]);
     }
     return static_cast<uint32_t>(blocks_.size() - 1);
   });

@@ -18,6 +18,7 @@ class TriangleTree {
   /// Triangle i has the vertices vertices[faces[i][k]]; its id in visits is i.
   TriangleTree(std::span<const math::Vec3> vertices, std::span<const std::array<int, 3>> faces);
 
+  /// The tree's leaf order (bvh_.order(): block b's lane l holds face order()[b.first + l]) counts in.
   size_t bytes() const { return bvh_.bytes() + blocks_.capacity() * sizeof(TriangleBlock); }
   size_t node_count() const { return bvh_.node_count(); }
 
@@ -36,10 +37,11 @@ class TriangleTree {
       for (unsigned m = triangle_ray.candidates(b, low, high(t), entry); m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > t) continue;
-        if constexpr (std::is_same_v<decltype(visit(b.id[lane], t)), bool>) {
-          if (visit(b.id[lane], t)) return true;
+        const uint32_t face = bvh_.order()[b.first + lane];
+        if constexpr (std::is_same_v<decltype(visit(face, t)), bool>) {
+          if (visit(face, t)) return true;
         } else {
-          visit(b.id[lane], t);
+          visit(face, t);
         }
       }
       return false;

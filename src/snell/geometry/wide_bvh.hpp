@@ -85,6 +85,15 @@ class WideBvh {
         if (n.count[k] > 0) n.child[k] = relabel(n.child[k], n.count[k]);
   }
 
+  /// Whether the ray's origin and direction are finite: only then does the walk run, as a ray with a NaN
+  /// or infinite component would enter the empty box of an unused child slot (the slab test's NaN rule
+  /// keeps the window where a distance is NaN); such a ray meets nothing anyway.
+  static bool finite(const math::Ray& ray) {
+    // x * 0 is 0 for finite x and NaN otherwise; no overflow as in a plain sum.
+    const math::Vec3 o = ray.origin * 0.0, d = ray.direction * 0.0;
+    return o.x + o.y + o.z + d.x + d.y + d.z == 0;
+  }
+
   /// Calls leaf(label, count, t_max) for the leaves whose box the ray may enter within [t_min, t_max],
   /// nearest box first; `leaf` may lower t_max (later boxes are culled against it), and returning true
   /// ends the walk. With kOrdered false the children are walked in no particular order (occlusion
@@ -97,16 +106,16 @@ class WideBvh {
   template <int L, bool kOrdered = true, class Leaf, class PrefetchLeaf>
   SNELL_LANES_INLINE size_t walk(const math::Ray& ray, double t_min, double t_max, Leaf& leaf,
                                  PrefetchLeaf& prefetch_leaf) const {
-    if (order_.empty() || !(t_min < t_max)) return 0;
+    if (order_.empty() || !(t_min < t_max) || !finite(ray)) return 0;
     // A root node's children are tested by the walk itself; only a root leaf needs its box tested here.
-    double entry = t_min, exit;
+    double entry, exit;
     if (root_count_ > 0 && !RayBox(ray).enter(root_box_, t_min, t_max, entry, exit)) return 0;
     // Single precision where the ray and window allow it (half the arithmetic of the double test, L boxes
     // per instruction), else double.
     const FloatSlabs float_slabs(ray);
     return float_slabs.usable() && t_min >= 0
-               ? walk_with<L, kOrdered>(float_slabs, entry, t_min, t_max, leaf, prefetch_leaf)
-               : walk_with<L, kOrdered>(DoubleSlabs(ray), entry, t_min, t_max, leaf, prefetch_leaf);
+               ? walk_with<L, kOrdered>(float_slabs, t_min, t_max, leaf, prefetch_leaf)
+               : walk_with<L, kOrdered>(DoubleSlabs(ray), t_min, t_max, leaf, prefetch_leaf);
   }
 
  private:
@@ -114,16 +123,16 @@ class WideBvh {
   // stack of kStackSize (one entry per level) never overflows.
   static constexpr int kMaxSahDepth = 64;
   static constexpr int kMaxBinaryDepth = kMaxSahDepth + 32;
-  // A walk pops one node and pushes at most kWidth children per level (sorted in place on the stack).
+  // A walk pushes at most kWidth - 1 children per level (sorted in place on the stack).
   static constexpr int kStackSize = (kWidth - 1) * kMaxBinaryDepth + kWidth;
   friend class WideBvhBuilder;
 
-  /// The walk over the wide nodes with the box test of `Slabs` (FloatSlabs or DoubleSlabs). Children hit
-  /// are pushed farthest first (kOrdered), so the nearest is walked next; a pending child is skipped when a
-  /// hit nearer than its entry has been found meanwhile.
+  /// The walk over the wide nodes with the box test of `Slabs` (FloatSlabs or DoubleSlabs). Of the children
+  /// hit the nearest (kOrdered) is walked next and the others pushed farthest first; a pending child is
+  /// skipped when a hit nearer than its entry has been found meanwhile.
   template <int L, bool kOrdered, class Slabs, class Leaf, class PrefetchLeaf>
-  SNELL_LANES_INLINE size_t walk_with(const Slabs& slabs, double root_entry, double t_min, double t_max,
-                                      Leaf& leaf, PrefetchLeaf& prefetch_leaf) const {
+  SNELL_LANES_INLINE size_t walk_with(const Slabs& slabs, double t_min, double t_max, Leaf& leaf,
+                                      PrefetchLeaf& prefetch_leaf) const {
     using Real = typename Slabs::Real;
     /// A subtree waiting to be walked: a node (count 0) or a leaf (count > 0), entered at `entry`. No
     /// default member initialisers: the stack of these must cost nothing to create. 16 bytes, so that an
@@ -137,42 +146,81 @@ class WideBvh {
     typename Slabs::template Lanes<L> lanes(slabs, Slabs::round_down(t_min), box_t_max);
     size_t visited = 0;
     std::array<Pending, kStackSize> stack;
-    stack[0] = {root_index_, root_count_, Slabs::round_down(root_entry)};
-    int top = 1;
-    while (top > 0) {
-      const Pending p = stack[--top];
-      // box_t_max >= t_max: a child entered beyond it is entered beyond the nearest hit.
-      if (p.entry > box_t_max) continue;
+    int top = 0;
+    // The subtree walked now, held in registers: the nearest child hit is walked straight after its node,
+    // without a round trip through the stack (as Embree's BVHNNodeTraverser1Hit), and a node with one or
+    // two children hit needs no sort.
+    uint32_t index = root_index_, count = root_count_;
+    while (true) {
       ++visited;
-      if (p.count > 0) {
+      if (count > 0) {
         const double before = t_max;
-        if (leaf(p.index, p.count, t_max)) break;
+        if (leaf(index, count, t_max)) break;
         if (t_max != before) {
           box_t_max = Slabs::round_up(t_max);
           lanes.set_t_max(box_t_max);
         }
-        continue;
+      } else {
+        const Node& node = nodes_[index];
+        Real entry[kWidth];
+        unsigned mask = static_cast<unsigned>(lanes.test(node.planes, entry));
+        if (mask != 0) {
+          const auto queue = [&](int k) __attribute__((always_inline)) {
+            if (node.count[k] > 0)
+              prefetch_leaf(node.child[k]);
+            else
+              prefetch_lines(&nodes_[node.child[k]], sizeof(Node));
+          };
+          const int k0 = std::countr_zero(mask);
+          mask &= mask - 1;
+          queue(k0);
+          if (mask == 0) {
+            index = node.child[k0];
+            count = node.count[k0];
+            continue;
+          }
+          const int k1 = std::countr_zero(mask);
+          mask &= mask - 1;
+          queue(k1);
+          if (mask == 0) {
+            // Of equal entries the later child is walked first, as the sort below does.
+            const bool second_first = !kOrdered || entry[k1] <= entry[k0];
+            const int near = second_first ? k1 : k0, far = second_first ? k0 : k1;
+            stack[top++] = {node.child[far], node.count[far], entry[far]};
+            index = node.child[near];
+            count = node.count[near];
+            continue;
+          }
+          // Three or more: sorted straight onto the stack, farthest first (insertion by decreasing entry),
+          // and the nearest taken off again.
+          Pending* hits = stack.data() + top;
+          hits[0] = {node.child[k0], node.count[k0], entry[k0]};
+          int n = 1;
+          const auto insert = [&](int k) __attribute__((always_inline)) {
+            int j = n++;
+            if constexpr (kOrdered)
+              for (; j > 0 && hits[j - 1].entry < entry[k]; --j) hits[j] = hits[j - 1];
+            hits[j] = {node.child[k], node.count[k], entry[k]};
+          };
+          insert(k1);
+          for (; mask != 0; mask &= mask - 1) {
+            const int k = std::countr_zero(mask);
+            queue(k);
+            insert(k);
+          }
+          top += n - 1;
+          index = hits[n - 1].index;
+          count = hits[n - 1].count;
+          continue;
+        }
       }
-      const Node& node = nodes_[p.index];
-      Real entry[kWidth];
-      int mask = lanes.test(node.planes, entry);
-      // The children hit are sorted straight onto the stack, farthest first (insertion by decreasing
-      // entry).
-      Pending* hits = stack.data() + top;
-      int n = 0;
-      for (; mask != 0; mask &= mask - 1) {
-        const int k = std::countr_zero(static_cast<unsigned>(mask));
-        if (node.child[k] == kNoChild) continue;
-        int j = n++;
-        if constexpr (kOrdered)
-          for (; j > 0 && hits[j - 1].entry < entry[k]; --j) hits[j] = hits[j - 1];
-        hits[j] = {node.child[k], node.count[k], entry[k]};
-        if (node.count[k] > 0)
-          prefetch_leaf(node.child[k]);
-        else
-          prefetch_lines(&nodes_[node.child[k]], sizeof(Node));
-      }
-      top += n;
+      // Next: the nearest pending subtree not entered beyond the nearest hit (box_t_max >= t_max).
+      do {
+        if (top == 0) return visited;
+        --top;
+      } while (stack[top].entry > box_t_max);
+      index = stack[top].index;
+      count = stack[top].count;
     }
     return visited;
   }
