@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "snell/geometry/float_slabs.hpp"
 #include "snell/geometry/ray_box.hpp"
@@ -132,6 +133,28 @@ TEST(FloatSlabsTest, RaysFloatCannotHoldAreLeftToTheDoubleTest) {
   EXPECT_FALSE(FloatSlabs(Ray{{1e31, 0, 0}, {1, 0, 0}, 0}).usable());
   EXPECT_FALSE(FloatSlabs(Ray{{0, 0, 0}, {1, 1e-35, 0}, 0}).usable());
   EXPECT_TRUE(FloatSlabs(Ray{{0, 0, 0}, {1, 0, -0.0}, 0}).usable());
+}
+
+TEST(FloatSlabsTest, BracketingRoundsBothWaysAsTheSeparateRoundings) {
+  // float_bracket (the walk's setup) must give float_below and float_above exactly: floats themselves,
+  // halfway cases, zero and values around the smallest normals.
+  Pcg32 rng(3);
+  std::vector<double> values = {0.0,    -0.0,    1.0,           -1.0,          0.1,
+                                -0.1,   1e-40,   -1e-40,        1e30,          -1e30,
+                                3.4e38, -3.4e38, 1.0 + 0x1p-24, 1.0 - 0x1p-25, -(1.0 + 0x1p-24)};
+  for (int i = 0; i < 10000; ++i) {
+    const double v = uniform(rng, -1, 1) * std::pow(10.0, uniform(rng, -40, 38));
+    values.push_back(v);
+    values.push_back(static_cast<float>(v));
+  }
+  for (const double v : values) {
+    float below, above;
+    snell::geometry::float_bracket(v, below, above);
+    EXPECT_EQ(below, snell::geometry::float_below(v)) << v;
+    EXPECT_EQ(above, snell::geometry::float_above(v)) << v;
+    EXPECT_LE(static_cast<double>(below), v);
+    EXPECT_GE(static_cast<double>(above), v);
+  }
 }
 
 }  // namespace

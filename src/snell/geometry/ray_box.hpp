@@ -31,6 +31,16 @@ inline float float_above(double v) {
   return -float_below(-v);
 }
 
+/// float_below(v) and float_above(v) of |v| <= float's largest with one conversion: the nearest float
+/// is one of them and its neighbour on the other side of v the other (the walk's setup rounds each
+/// origin coordinate both ways).
+inline void float_bracket(double v, float& below, float& above) {
+  const auto f = static_cast<float>(v);
+  const auto back = static_cast<double>(f);
+  below = back > v ? next_float_down(f) : f;
+  above = back < v ? -next_float_down(-f) : f;
+}
+
 /// float_above of a value that changes seldom (a walk's window end, lowered only by a hit), rounded again
 /// only when it changes: per leaf, the rounding was a twentieth of a random ray's instructions.
 class FloatAboveOnChange {

@@ -85,10 +85,12 @@ class TriangleRay {
     ky_ = (kx_ + 1) % 3;
     const double dz = d[kz_];
     const double inverse = 1 / dz;
-    for (int a = 0; a < 3; ++a) {
-      origin_[a] = static_cast<float>(ray.origin[a]);
-      origin_magnitude_ = std::max(origin_magnitude_, float_above(std::abs(ray.origin[a])));
-    }
+    for (int a = 0; a < 3; ++a) origin_[a] = static_cast<float>(ray.origin[a]);
+    // One rounding of the largest |coordinate| (rounding up keeps the order); a NaN stays NaN, which
+    // float_above makes infinite.
+    const math::Vec3& o = ray.origin;
+    const double largest = std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)});
+    origin_magnitude_ = float_above(std::isnan(o.x + o.y + o.z) ? NAN : largest);
     shear_x_ = static_cast<float>(d[kx_] * inverse);
     shear_y_ = static_cast<float>(d[ky_] * inverse);
     depth_scale_ = static_cast<float>(inverse);
