@@ -18,7 +18,8 @@ class TriangleTree {
   /// Triangle i has the vertices vertices[faces[i][k]]; its id in visits is i.
   TriangleTree(std::span<const math::Vec3> vertices, std::span<const std::array<int, 3>> faces);
 
-  /// The tree's leaf order (bvh_.order(): block b's lane l holds face order()[b.first + l]) counts in.
+  /// Includes the leaf order (in bvh_.bytes()), through which block b's lane l names face
+  /// order()[b.first + l].
   size_t bytes() const { return bvh_.bytes() + blocks_.capacity() * sizeof(TriangleBlock); }
   size_t node_count() const { return bvh_.node_count(); }
 
