@@ -59,6 +59,10 @@ Poly::Poly(int order, const std::vector<double>& coefficients) : order_(order) {
     }
   }
   if (terms_.empty()) throw std::invalid_argument("poly has only zero coefficients");
+  if (const auto box = poly_negative_region_bounds(terms_)) {
+    bounds_ = *box;
+    bounded_ = true;
+  }
 }
 
 double Poly::value(const Vec3& p) const {
