@@ -275,3 +275,27 @@ TEST(PolynomialTest, RandomPolynomialsWithSimpleDoubleAndClusteredRoots) {
                                      << ": a root found that is none of the polynomial's";
   }
 }
+
+TEST(PolynomialTest, HasRootAgreesWithRealRoots) {
+  // Random polynomials of degree 1 to 6 from random roots (some doubled, so that touching roots come up)
+  // and random windows, some empty: has_root says whether real_roots finds anything, without refining.
+  snell::math::Pcg32 rng(11);
+  int with = 0, without = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int degree = 1 + static_cast<int>(rng.next_uint() % 6);
+    std::vector<double> rs;
+    while (static_cast<int>(rs.size()) < degree) {
+      const double r = -2 + 4 * rng.next_double();
+      rs.push_back(r);
+      if (static_cast<int>(rs.size()) < degree && rng.next_double() < 0.2) rs.push_back(r);
+    }
+    std::vector<double> c = from_roots(rs, 0.1 + rng.next_double());
+    c[0] += 0.3 * (rng.next_double() - 0.5);  // moves roots, may pair some off into the complex plane
+    const double lo = -2 + 4 * rng.next_double(), hi = lo + 2 * (rng.next_double() - 0.1);
+    const bool expected = lo < hi && !roots_in(c, lo, hi).empty();
+    ASSERT_EQ(has_root(c, lo, hi), expected) << "trial " << trial;
+    (expected ? with : without)++;
+  }
+  EXPECT_GT(with, 4000);
+  EXPECT_GT(without, 4000);
+}

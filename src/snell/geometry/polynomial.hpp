@@ -24,6 +24,10 @@ inline constexpr int kMaxPolynomialDegree = 6;
 int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<double> roots,
                int max_roots = kMaxPolynomialDegree);
 
+/// Whether real_roots(coeffs, lo, hi, ...) would find a root, without refining any: a shadow ray needs only
+/// that. An empty interval has none; otherwise the same conditions as real_roots.
+bool has_root(std::span<const double> coeffs, double lo, double hi);
+
 /// Evaluates sum_i coeffs[i] * x^i (Horner).
 double evaluate_polynomial(std::span<const double> coeffs, double x);
 

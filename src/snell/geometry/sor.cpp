@@ -61,7 +61,7 @@ double Sor::radius_squared(double y) const {
   return evaluate_polynomial(piece.c, (y - piece.y0) / (piece.y1 - piece.y0));
 }
 
-template <typename F>
+template <bool kExistence, typename F>
 void Sor::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit) const {
   AxialRay axial;
   if (!axial.prepare(ray) || axial.misses_cylinder(radius_)) return;
@@ -111,6 +111,17 @@ void Sor::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit)
     const std::array<double, 4> eq{piece.c[0] - (a * alpha * alpha + b * alpha + c),
                                    piece.c[1] - (2 * a * alpha * beta + b * beta),
                                    piece.c[2] - a * beta * beta, piece.c[3]};
+    if constexpr (kExistence) {
+      // The window of w that maps into (t_min, t_max): a root there is a crossing.
+      double w0 = (axial.f + t_min * axial.length - alpha) / beta,
+             w1 = (axial.f + t_max * axial.length - alpha) / beta;
+      if (w0 > w1) std::swap(w0, w1);
+      if (has_root(eq, std::max(w0, -kJointSlack), std::min(w1, 1.0 + kJointSlack))) {
+        emit(LocalHit{});
+        return;
+      }
+      continue;
+    }
     double roots[3];
     const int n = real_roots(eq, -kJointSlack, 1.0 + kJointSlack, std::span<double>(roots, 3));
     for (int k = 0; k < n; ++k) {
@@ -128,7 +139,8 @@ void Sor::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit)
 }
 
 bool Sor::crosses(const Ray& ray, double t_min, double t_max) const {
-  return any_crossing(t_max, [&](const double& limit, auto&& emit) { crossings(ray, t_min, limit, emit); });
+  return any_crossing(t_max,
+                      [&](const double& limit, auto&& emit) { crossings<true>(ray, t_min, limit, emit); });
 }
 
 bool Sor::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {

@@ -36,7 +36,9 @@ class Sor final : public Shape {
     double r_min = 0, r_max = 0;
   };
   const Piece& piece_at(double y) const;
-  template <typename F>
+  /// Emits the crossings in (t_min, t_max); `emit` may lower t_max as it goes. With kExistence, a side
+  /// piece's crossing is only shown to exist (has_root) and emitted without its hit (shadow rays).
+  template <bool kExistence = false, typename F>
   void crossings(const Ray& ray, double t_min, const double& t_max, F&& emit) const;
 
   std::vector<Piece> pieces_;
