@@ -33,7 +33,7 @@ Bounds3 Lathe::bounds() const {
   return {Vec3(-radius_, profile_.lo().v, -radius_), Vec3(radius_, profile_.hi().v, radius_)};
 }
 
-template <typename F>
+template <bool kExistence, typename F>
 void Lathe::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit) const {
   AxialRay axial;
   if (!axial.prepare(ray) || axial.misses_cylinder(radius_)) return;
@@ -76,7 +76,7 @@ void Lathe::crossings(const Ray& ray, double t_min, const double& t_max, F&& emi
   // once a band starts beyond t_max (which a nearest-hit caller lowers as it finds hits) no later piece
   // can hold a nearer root, and its sextic is never solved (as POV-Ray's per-segment bounding cylinders).
   struct Band {
-    double t0;
+    double t0, t1;
     size_t piece;
   };
   thread_local std::vector<Band> bands;
@@ -88,7 +88,7 @@ void Lathe::crossings(const Ray& ray, double t_min, const double& t_max, F&& emi
     const double r_max = std::max(std::fabs(piece.lo.u), std::fabs(piece.hi.u));
     const double r_min = piece.lo.u > 0 ? piece.lo.u : piece.hi.u < 0 ? -piece.hi.u : 0;
     if (axial.misses_band(piece.lo.v, piece.hi.v, r_min, r_max)) continue;
-    bands.push_back({t0, i});
+    bands.push_back({t0, t1, i});
   }
   std::sort(bands.begin(), bands.end(), [](const Band& p, const Band& q) { return p.t0 < q.t0; });
   for (const Band& band : bands) {
@@ -104,6 +104,17 @@ void Lathe::crossings(const Ray& ray, double t_min, const double& t_max, F&& emi
     for (size_t k = 0; k < 7; ++k) eq[k] = a * y2[k] - dn.y * dn.y * r2[k];
     for (size_t k = 0; k < 4; ++k) eq[k] += b * dn.y * y[k];
     eq[0] += c * dn.y * dn.y;
+    if constexpr (kExistence) {
+      // A root's crossing is at its height on the piece, inside the band (u from the height, as below):
+      // with the whole band in the window, that a root exists is enough.
+      if (std::fabs(dn.y) > 0.1 && band.t0 > t_min && band.t1 < t_max) {
+        if (has_root(eq, -kJointSlack, 1.0 + kJointSlack)) {
+          emit(Crossing{band.t0, i, 0});
+          return;
+        }
+        continue;
+      }
+    }
     const int n = real_roots(eq, -kJointSlack, 1.0 + kJointSlack, roots);
     for (int k = 0; k < n; ++k) {
       const double u = evaluate_polynomial(y, roots[k]) / dn.y;
@@ -137,7 +148,8 @@ LocalHit Lathe::make_hit(const Ray& ray, const Crossing& c) const {
 }
 
 bool Lathe::crosses(const Ray& ray, double t_min, double t_max) const {
-  return any_crossing(t_max, [&](const double& limit, auto&& emit) { crossings(ray, t_min, limit, emit); });
+  return any_crossing(t_max,
+                      [&](const double& limit, auto&& emit) { crossings<true>(ray, t_min, limit, emit); });
 }
 
 bool Lathe::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {

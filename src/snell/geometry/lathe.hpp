@@ -26,7 +26,9 @@ class Lathe final : public Shape {
     size_t piece;
     double s;
   };
-  template <typename F>
+  /// With kExistence (shadow rays), a piece whose height band lies inside (t_min, t_max) is only shown to
+  /// have a root (has_root) and emitted without refining it.
+  template <bool kExistence = false, typename F>
   void crossings(const Ray& ray, double t_min, const double& t_max, F&& emit) const;
   LocalHit make_hit(const Ray& ray, const Crossing& c) const;
 

@@ -36,6 +36,22 @@ constexpr double kAbsoluteOffset = 1e-9;
 /// How far a ray that hits nothing is taken to go through fog and media (POV-Ray's BOUND_HUGE).
 constexpr double kSkyDepth = 2e10;
 
+/// c^e of a cosine c in [0, 1] (highlights, brilliance), where pow was 3-5% of the render on POV-Ray's
+/// metal examples: 0 where it is below exp(-40) = 4e-18, shown without pow by ln c <= c - 1 (so c^e <=
+/// exp(-e (1 - c))); whole exponents up to 64 (brilliance 2, roughness 1/20, phong_size 40) by squaring,
+/// within a few units in the last place of pow.
+double cosine_power(double c, double e) {
+  if (e * (1 - c) > 40) return 0.0;
+  if (e >= 1 && e <= 64 && e == std::floor(e)) {
+    auto n = static_cast<unsigned>(e);
+    double result = 1, base = c;
+    for (; n > 0; n >>= 1, base *= base)
+      if (n & 1) result *= base;
+    return result;
+  }
+  return std::pow(c, e);
+}
+
 Color pow_color(const Color& c, double e) {
   return {std::pow(std::max(0.0, c.r), e), std::pow(std::max(0.0, c.g), e), std::pow(std::max(0.0, c.b), e)};
 }
@@ -548,7 +564,7 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
   // subsurface finish replaces it by the dipole (subsurface_light).
   if (f.diffuse > 0 && !f.subsurface) {
     const double c = std::fabs(cos_l);
-    const double intensity = (f.brilliance != 1 ? std::pow(c, f.brilliance) : c) * f.diffuse * sp.opacity;
+    const double intensity = (f.brilliance != 1 ? cosine_power(c, f.brilliance) : c) * f.diffuse * sp.opacity;
     sum += intensity * pigment * lc;
     if (sp.observer) sp.observer->term(RayTerm::diffuse, intensity * pigment, intensity * pigment * lc);
   }
@@ -558,7 +574,7 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
   if (f.phong > 0 && highlights) {
     const double c = dot(math::reflect(eye, sp.normal), to_light);
     if (c > 0) {
-      const double intensity = f.phong * std::pow(c, f.phong_size);
+      const double intensity = f.phong * cosine_power(c, f.phong_size);
       const Color phong = intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
       sum += phong;
       if (sp.observer) sp.observer->term(RayTerm::phong, Color(intensity), phong);
@@ -571,7 +587,7 @@ Color WhittedIntegrator::surface_response(const ShadingPoint& sp, const Vec3& to
     if (hl > 0) {
       const double c = dot(h, sp.normal) / hl;
       if (c > 0) {
-        const double intensity = f.specular * std::pow(c, 1.0 / f.roughness);
+        const double intensity = f.specular * cosine_power(c, 1.0 / f.roughness);
         const Color specular =
             intensity * (f.metallic > 0 ? lc * metallic_tint(f.metallic, pigment, cos_l) : lc);
         sum += specular;
