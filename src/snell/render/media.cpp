@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include "snell/math/constants.hpp"
 
@@ -133,11 +134,45 @@ struct LitStretch {
   double s0, s1;
 };
 
-std::vector<LitStretch> lit_stretches(const std::vector<LitLight>& lights, double depth) {
-  std::vector<LitStretch> out;
-  if (lights.empty()) return {{false, 0, depth}};
+/// Scratch vectors of one media_along call, kept per thread and per nesting level so that a media ray
+/// allocates nothing once the vectors have grown (they were ~7 allocations a camera ray on media1).
+struct MediaScratch {
+  std::vector<LitLight> lit;
   std::vector<double> starts, ends;
-  for (const LitLight& l : lights) {
+  std::vector<LitStretch> stretches;
+  std::vector<Interval> intervals;
+};
+
+class ScratchLease {
+ public:
+  ScratchLease() {
+    if (in_use_ == pool_.size()) pool_.emplace_back();  // a deque: earlier leases stay where they are
+    scratch_ = &pool_[in_use_++];
+  }
+  ~ScratchLease() { --in_use_; }
+  ScratchLease(const ScratchLease&) = delete;
+  ScratchLease& operator=(const ScratchLease&) = delete;
+  MediaScratch& operator*() const { return *scratch_; }
+
+ private:
+  static thread_local std::deque<MediaScratch> pool_;
+  static thread_local size_t in_use_;
+  MediaScratch* scratch_;
+};
+thread_local std::deque<MediaScratch> ScratchLease::pool_;
+thread_local size_t ScratchLease::in_use_ = 0;
+
+void lit_stretches(MediaScratch& scratch, double depth) {
+  std::vector<LitStretch>& out = scratch.stretches;
+  out.clear();
+  if (scratch.lit.empty()) {
+    out.push_back({false, 0, depth});
+    return;
+  }
+  std::vector<double>&starts = scratch.starts, &ends = scratch.ends;
+  starts.clear();
+  ends.clear();
+  for (const LitLight& l : scratch.lit) {
     starts.push_back(l.t0);
     ends.push_back(l.t1);
   }
@@ -154,14 +189,14 @@ std::vector<LitStretch> lit_stretches(const std::vector<LitLight>& lights, doubl
     }
   }
   if (out.back().s1 < depth) out.push_back({false, out.back().s1, depth});
-  return out;
 }
 
 /// Sampling intervals: `intervals` (at least one per stretch), lit stretches getting `ratio` of them
 /// (POV-Ray media.cpp, ComputeMediaSampleInterval).
-std::vector<Interval> sampling_intervals(const std::vector<LitStretch>& stretches, const Media& m,
-                                         bool constant) {
-  std::vector<Interval> out;
+void sampling_intervals(MediaScratch& scratch, const Media& m, bool constant) {
+  const std::vector<LitStretch>& stretches = scratch.stretches;
+  std::vector<Interval>& out = scratch.intervals;
+  out.clear();
   const size_t count = std::max(static_cast<size_t>(m.intervals), stretches.size());
   auto split = [&](const LitStretch& s, size_t n) {
     const double delta = (s.s1 - s.s0) / static_cast<double>(n);
@@ -181,21 +216,20 @@ std::vector<Interval> sampling_intervals(const std::vector<LitStretch>& stretche
       remaining -= std::min(remaining, n);
     }
   }
-  return out;
 }
 
 class MediaSampler {
  public:
   MediaSampler(const std::vector<const Media*>& media, const std::vector<LitLight>& lights,
                const math::Ray& ray, math::Pcg32& rng, const LightSampler& light_at)
-      : media_(media), lights_(lights), ray_(ray), rng_(rng), light_at_(light_at), lead_(*media.front()) {
+      : media_(media), lights_(lights), ray_(ray), rng_(rng), light_at_(light_at), lead_(media.front()) {
     for (const Media* m : media) {
-      if (m->intervals > lead_.intervals) lead_ = *m;
+      if (m->intervals > lead_->intervals) lead_ = m;
       aa_threshold_ = std::min(aa_threshold_, m->aa_threshold);
     }
   }
 
-  const Media& lead() const { return lead_; }
+  const Media& lead() const { return *lead_; }
 
   /// Emission x length and extinction x length of interval `iv` sampled at fraction `f` of its length.
   void sample(const Interval& iv, double f, Color& emitted, Color& optical) const {
@@ -229,7 +263,7 @@ class MediaSampler {
   /// sub-intervals before it (not within itself). POV-Ray 3.8 changed all three; 3.7's output is the
   /// reference.
   void adaptive(Interval& iv) {
-    const Media& m = lead_;
+    const Media& m = *lead_;
     const int count = std::max(2, m.min_samples / 2 + 1);
     const double dd = 1.0 / (count + 1);
     Color c0, od0;
@@ -249,7 +283,7 @@ class MediaSampler {
 
   /// Methods 1 and 2: `min_samples` random (1) or jittered evenly spaced (2) samples.
   void regular(Interval& iv) {
-    const Media& m = lead_;
+    const Media& m = *lead_;
     for (int j = 0; j < m.min_samples; ++j) {
       const double f = m.method == 2
                            ? (j + 0.5) / m.min_samples + rng_.next_double() * m.jitter / m.min_samples
@@ -266,7 +300,7 @@ class MediaSampler {
   /// POV-Ray's recursive midpoint refinement (media.cpp, ComputeOneMediaSampleRecursive), with its weights.
   void refine(const Interval& iv, double d1, double d3, const Color& c1, const Color& c3, const Color& od1,
               const Color& od3, int depth, Color& result, Color& result_od) {
-    const double d2 = 0.5 * (d1 + d3) + lead_.jitter * (d3 - d1) * (rng_.next_double() - 0.5);
+    const double d2 = 0.5 * (d1 + d3) + lead_->jitter * (d3 - d1) * (rng_.next_double() - 0.5);
     Color c2, od2;
     sample(iv, d2, c2, od2);
     if (depth <= 0) {
@@ -298,7 +332,7 @@ class MediaSampler {
   const math::Ray& ray_;
   math::Pcg32& rng_;
   const LightSampler& light_at_;
-  Media lead_;
+  const Media* lead_;  // the medium with the most intervals, which sets the sampling
   double aa_threshold_ = 1e300;
 };
 
@@ -327,7 +361,10 @@ MediaEffect media_along(const std::vector<const Media*>& media, const std::vecto
                         const math::Ray& ray, double depth, math::Pcg32& rng, const LightSampler& light_at) {
   MediaEffect effect;
   if (media.empty() || !(depth > 0)) return effect;
-  std::vector<LitLight> lit;
+  const ScratchLease lease;
+  MediaScratch& scratch = *lease;
+  std::vector<LitLight>& lit = scratch.lit;
+  lit.clear();
   for (const scene::Light& light : lights) {
     // A shadowless light is POV-Ray's fill light, a kind its media never gather light from (media.cpp,
     // ComputeOneMediaLightInterval knows point, spot and cylinder lights only).
@@ -337,10 +374,10 @@ MediaEffect media_along(const std::vector<const Media*>& media, const std::vecto
       lit.push_back({&light, std::max(t0, 0.0), std::min(t1, depth)});
   }
   MediaSampler sampler(media, lit, ray, rng, light_at);
-  std::vector<Interval> intervals =
-      sampling_intervals(lit_stretches(lit, depth), sampler.lead(), all_constant(media));
+  lit_stretches(scratch, depth);
+  sampling_intervals(scratch, sampler.lead(), all_constant(media));
   Color optical(0);
-  for (Interval& iv : intervals) {
+  for (Interval& iv : scratch.intervals) {
     if (sampler.lead().method == 3)
       sampler.adaptive(iv);
     else
