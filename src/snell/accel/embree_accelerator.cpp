@@ -55,7 +55,7 @@ struct QueryContext {
   double length;   // |ray.direction|: Embree's t is world distance from the shifted origin
   double pad;
   scene::RayKind kind;
-  scene::SurfaceHit* hit;
+  scene::SurfaceHit* hit;  // null for occlusion queries, which need only the occluder
   bool found;
   const scene::Object* occluder;  // occlusion queries: the object that ended the walk
 };
@@ -165,7 +165,7 @@ struct EmbreeAccelerator::Impl {
       args->valid[0] = 0;
       return;
     }
-    *q->hit = object->to_world(*q->ray, *local);
+    if (q->hit) *q->hit = object->to_world(*q->ray, *local);
     q->t_max = local->t;
     q->found = true;
     q->occluder = object;  // an occlusion query ends at this accepted hit
@@ -325,6 +325,7 @@ const scene::Object* EmbreeAccelerator::occluder(const Ray& ray, double t_min, d
         if (object_blocks(*o, ray, t_min, t_max, kind)) return o;
     return nullptr;
   }
+  q.hit = nullptr;  // the triangle filter then skips building a world hit nobody reads
   rtcOccluded1(s.scene, &q.base, &r);
   return q.occluder;
 }
