@@ -15,6 +15,7 @@ struct AxialRay {
   math::Vec3 o, dn;
   double f = 0, length = 0;
   double a = 0, b = 0, c = 0;
+  double inv_dy = 0;  // 1 / dn.y: the band tests below run per piece, a division each cost more than the rest
 
   /// False for a degenerate (zero or non-finite) direction.
   bool prepare(const math::Ray& ray) {
@@ -26,6 +27,7 @@ struct AxialRay {
     a = dn.x * dn.x + dn.z * dn.z;
     b = 2 * (o.x * dn.x + o.z * dn.z);
     c = o.x * o.x + o.z * o.z;
+    inv_dy = 1 / dn.y;  // infinite for a horizontal ray, which the shapes handle apart
     return true;
   }
   /// Whether the ray never comes within `radius` of the axis.
@@ -38,7 +40,7 @@ struct AxialRay {
   /// that a root at the band's edge is never outside it).
   std::pair<double, double> band_span(double y_lo, double y_hi) const {
     const double slack = 1e-7 * (1 + std::fabs(y_lo) + std::fabs(y_hi));
-    double u0 = (y_lo - slack - o.y) / dn.y, u1 = (y_hi + slack - o.y) / dn.y;
+    double u0 = (y_lo - slack - o.y) * inv_dy, u1 = (y_hi + slack - o.y) * inv_dy;
     if (u0 > u1) std::swap(u0, u1);
     return {t_of(u0), t_of(u1)};
   }
@@ -48,7 +50,7 @@ struct AxialRay {
   /// r_min^2 there. Lets shapes skip a piece's polynomial (as POV-Ray's per-segment bounding cylinders).
   bool misses_band(double y_lo, double y_hi, double r_min, double r_max) const {
     const double slack = 1e-9 * (1 + std::fabs(y_lo) + std::fabs(y_hi));
-    double u0 = (y_lo - slack - o.y) / dn.y, u1 = (y_hi + slack - o.y) / dn.y;
+    double u0 = (y_lo - slack - o.y) * inv_dy, u1 = (y_hi + slack - o.y) * inv_dy;
     if (u0 > u1) std::swap(u0, u1);
     const auto rho2 = [&](double u) { return (a * u + b) * u + c; };
     const double vertex = a > 0 ? std::clamp(-b / (2 * a), u0, u1) : u0;
