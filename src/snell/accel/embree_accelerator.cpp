@@ -172,8 +172,9 @@ struct EmbreeAccelerator::Impl {
   }
 
   /// Fills `q` and the float ray for a query of `ray` over (t_min, t_max); false when the ray misses the
-  /// scene box or cannot be walked in float (then `walkable` is false too).
-  bool prepare(const Ray& ray, double t_min, double t_max, scene::RayKind kind, scene::SurfaceHit& hit,
+  /// scene box or cannot be walked in float (then `walkable` is false too). `hit` receives the nearest
+  /// hit; null for an occlusion query.
+  bool prepare(const Ray& ray, double t_min, double t_max, scene::RayKind kind, scene::SurfaceHit* hit,
                QueryContext& q, RTCRay& r, bool& walkable) const;
 };
 
@@ -244,7 +245,7 @@ EmbreeAccelerator::EmbreeAccelerator(const scene::Scene& scene) : impl_(std::mak
 EmbreeAccelerator::~EmbreeAccelerator() = default;
 
 bool EmbreeAccelerator::Impl::prepare(const Ray& ray, double t_min, double t_max, scene::RayKind kind,
-                                      scene::SurfaceHit& hit, QueryContext& q, RTCRay& r,
+                                      scene::SurfaceHit* hit, QueryContext& q, RTCRay& r,
                                       bool& walkable) const {
   walkable = true;
   // An empty or NaN window (caught by the negated test) has no hits; Embree must not see NaN rays.
@@ -270,7 +271,7 @@ bool EmbreeAccelerator::Impl::prepare(const Ray& ray, double t_min, double t_max
   q.length = length;
   q.pad = pad;
   q.kind = kind;
-  q.hit = &hit;
+  q.hit = hit;
   q.found = false;
   q.occluder = nullptr;
 
@@ -296,7 +297,7 @@ bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, sc
   QueryContext q;  // every field is set by prepare: value-initialising both cost a rep stos a ray
   RTCRayHit rh;
   bool walkable;
-  if (!s.prepare(ray, t_min, t_max, kind, hit, q, rh.ray, walkable)) {
+  if (!s.prepare(ray, t_min, t_max, kind, &hit, q, rh.ray, walkable)) {
     if (walkable) return found;
     // Nothing Embree can walk; fall back to testing every object, still in double precision.
     const bool any_bounded = test_all(s.bounded, ray, t_min, t_max, kind, hit);
@@ -311,21 +312,18 @@ bool EmbreeAccelerator::intersect(const Ray& ray, double t_min, double t_max, sc
 const scene::Object* EmbreeAccelerator::occluder(const Ray& ray, double t_min, double t_max,
                                                  scene::RayKind kind) const {
   const Impl& s = *impl_;
-  // Scratch for the object tests, kept per thread: clearing a fresh one was a tenth of the query's cost.
-  thread_local scene::SurfaceHit hit;
   for (const scene::Object* o : s.unbounded)
     if (object_blocks(*o, ray, t_min, t_max, kind)) return o;
   QueryContext q;
   RTCRay r;
   bool walkable;
-  if (!s.prepare(ray, t_min, t_max, kind, hit, q, r, walkable)) {
+  if (!s.prepare(ray, t_min, t_max, kind, nullptr, q, r, walkable)) {
     if (walkable) return nullptr;
     for (const auto* objects : {&s.bounded, &s.native})
       for (const scene::Object* o : *objects)
         if (object_blocks(*o, ray, t_min, t_max, kind)) return o;
     return nullptr;
   }
-  q.hit = nullptr;  // the triangle filter then skips building a world hit nobody reads
   rtcOccluded1(s.scene, &q.base, &r);
   return q.occluder;
 }

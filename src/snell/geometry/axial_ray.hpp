@@ -35,6 +35,7 @@ struct AxialRay {
     return a > 0 && c - b * b / (4 * a) > radius * radius * (1 + 1e-9);
   }
   double t_of(double u) const { return (u - f) / length; }
+  double u_of(double t) const { return f + t * length; }
 
   /// The t interval in which a non-horizontal ray is between heights y_lo and y_hi (a little wider, so
   /// that a root at the band's edge is never outside it).

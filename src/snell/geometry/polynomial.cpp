@@ -223,6 +223,15 @@ int quadratic_roots(const Poly& p, double lo, double hi, std::span<double> roots
   return n;
 }
 
+/// The roots in (lo, hi] of a monic polynomial of degree 1 or 2, by formula.
+int closed_form_roots(const Poly& p, double lo, double hi, std::span<double> roots, int max_roots) {
+  if (p.degree == 2) return quadratic_roots(p, lo, hi, roots, max_roots);
+  const double r = -p.c[0];
+  if (!(r > lo && r <= hi && max_roots > 0)) return 0;
+  roots[0] = r;
+  return 1;
+}
+
 /// The polynomial with negligible leading coefficients dropped, divided by its leading coefficient
 /// (monic scaling keeps every polynomial of the isolation on one scale); degree <= 0 when it has no
 /// isolated roots (also for a non-finite coefficient).
@@ -254,16 +263,7 @@ int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<d
   if (p.degree <= 0) return 0;
   if (roots.size() < static_cast<size_t>(p.degree))
     throw std::invalid_argument("real_roots: output span shorter than the degree");
-  if (p.degree == 1) {
-    const double r = -p.c[0];
-    if (r > lo && r <= hi && max_roots > 0) {
-      roots[0] = r;
-      return 1;
-    }
-    return 0;
-  }
-
-  if (p.degree == 2) return quadratic_roots(p, lo, hi, roots, max_roots);
+  if (p.degree <= 2) return closed_form_roots(p, lo, hi, roots, max_roots);
   if (keeps_sign(p, lo, hi)) return 0;
   return isolate(p, lo, hi, true, std::min(max_roots, static_cast<int>(roots.size())), kRootAccuracy,
                  roots.data());
@@ -275,7 +275,7 @@ bool has_root(std::span<const double> coeffs, double lo, double hi) {
   if (p.degree <= 0) return false;
   if (p.degree <= 2) {
     double roots[2];
-    return p.degree == 1 ? -p.c[0] > lo && -p.c[0] <= hi : quadratic_roots(p, lo, hi, roots, 1) > 0;
+    return closed_form_roots(p, lo, hi, roots, 1) > 0;
   }
   // Opposite signs at the ends: a root between them, wherever it is (most shadow rays that are blocked).
   const double at_lo = p(lo), at_hi = p(hi);

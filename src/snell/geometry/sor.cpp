@@ -113,8 +113,7 @@ void Sor::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit)
                                    piece.c[2] - a * beta * beta, piece.c[3]};
     if constexpr (kExistence) {
       // The window of w that maps into (t_min, t_max): a root there is a crossing.
-      double w0 = (axial.f + t_min * axial.length - alpha) / beta,
-             w1 = (axial.f + t_max * axial.length - alpha) / beta;
+      double w0 = (axial.u_of(t_min) - alpha) / beta, w1 = (axial.u_of(t_max) - alpha) / beta;
       if (w0 > w1) std::swap(w0, w1);
       if (has_root(eq, std::max(w0, -kJointSlack), std::min(w1, 1.0 + kJointSlack))) {
         emit(LocalHit{});
