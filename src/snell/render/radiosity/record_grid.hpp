@@ -81,16 +81,28 @@ class RecordGrid {
 
  private:
   static uint64_t cell_key(int level, int64_t x, int64_t y, int64_t z);
-  /// A record's position, squared radius and normal in floats, for quick rejection of far records.
-  struct Probe {
-    float x, y, z, radius_squared, nx, ny, nz;
+  /// One cell's records: their positions, squared radii and normals in floats, in groups of kGroup
+  /// (structure of arrays, the last group padded with entries no query keeps), for a quick conservative
+  /// rejection of most of them a group at a time before the exact rule weighs the rest. A query weighs
+  /// every record of its cell: with the reach sized for the largest error bound, most lie out of reach
+  /// (gamma_showcase: about 800 entries looked at per lookup for 55 weighed, half of the render's time).
+  struct Cell {
+    static constexpr int kGroup = 4;
+    std::vector<float> x, y, z, radius_squared, nx, ny, nz;
+    std::vector<uint32_t> index;
+    uint32_t size = 0;
+    void add(uint32_t record, const Record& r);
+  };
+  /// A grid level: cell side 2^level and its inverse.
+  struct Level {
+    int level;
+    double side, inverse_side;
   };
   double reach_factor_;
   std::vector<Record> records_;
-  std::vector<Probe> probes_;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
-  /// Grid levels that hold records (cell side 2^level), ascending.
-  std::vector<int> levels_;
+  std::unordered_map<uint64_t, Cell> cells_;
+  /// Grid levels that hold records, ascending.
+  std::vector<Level> levels_;
   uint64_t index_entries_ = 0;
 };
 
