@@ -21,9 +21,10 @@ math::Vec3 world_point(const PlainTriangle& t, const math::Vec3& p) {
   return t.transform ? t.transform->point(p) : p;
 }
 
-/// Bits 8k .. 8k + 7 of a block's tag: the lanes ray kind k sees.
-uint32_t visible_lanes(const geometry::TriangleBlock& block, scene::RayKind kind) {
-  return (block.tag >> (8 * static_cast<int>(kind))) & 0xffu;
+/// Bits 8k .. 8k + 7 of a block's tag hold the lanes ray kind k sees: the shift for a kind (taken once per
+/// query, not per block).
+int visible_shift(scene::RayKind kind) {
+  return 8 * static_cast<int>(kind);
 }
 
 }  // namespace
@@ -83,17 +84,18 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
   const geometry::TriangleRay::Lanes<L> triangle_ray{geometry::TriangleRay(ray)};
   const float t_min = geometry::float_below(nearest.t_min());
   geometry::FloatAboveOnChange float_t_max(nearest.t_max());
+  const int shift = visible_shift(nearest.kind());
   const auto leaf = [&](uint32_t label, uint32_t count, double& t_max) __attribute__((always_inline)) {
     bool hit = false;
     if (label & kTriangleLeaf) {
       const geometry::TriangleBlock& block = blocks_[label & ~kTriangleLeaf];
-      const uint32_t visible = visible_lanes(block, nearest.kind());
+      const uint32_t visible = (block.tag >> shift) & 0xffu;
       ObjectTestCounter::count(static_cast<uint64_t>(std::popcount(visible)));
       if (t_query_cost)
         for (uint32_t m = visible; m != 0; m &= m - 1)
           count_object_test(*triangles_[block.first + std::countr_zero(m)].object);
       float entry[geometry::TriangleBlock::kSize];
-      uint32_t m = triangle_ray.candidates(block, t_min, float_t_max(t_max), entry) & visible;
+      uint32_t m = triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry);
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > nearest.t_max()) continue;

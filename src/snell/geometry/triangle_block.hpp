@@ -29,6 +29,7 @@
 // fail, so such lanes are kept and the double test decides.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 #include "snell/geometry/ray_box.hpp"
@@ -124,7 +125,7 @@ class TriangleRay {
       using math::lanes::splat;
       const int axis[3] = {ray.kx_, ray.ky_, ray.kz_};
       for (int i = 0; i < 3; ++i) {
-        row_[i] = axis[i];
+        row_offset_[i] = axis[i] * static_cast<std::ptrdiff_t>(sizeof(Row));
         splat(origin_[i], ray.origin_[axis[i]]);
       }
       splat(shear_x_, ray.shear_x_);
@@ -135,7 +136,14 @@ class TriangleRay {
     /// TriangleRay::candidates.
     SNELL_LANES_INLINE unsigned candidates(const TriangleBlock& b, float t_min, float t_max,
                                            float (&entry)[TriangleBlock::kSize]) const {
-      const unsigned lanes = (1u << b.count) - 1;
+      return candidates_among(b, (1u << b.count) - 1, t_min, t_max, entry);
+    }
+
+    /// candidates() restricted to the lanes set in `lanes` (a subset of those in use): for an owner that
+    /// keeps such a mask per block anyway (the scene BVH's lanes visible to each ray kind), which spares the
+    /// mask of the lanes in use.
+    SNELL_LANES_INLINE unsigned candidates_among(const TriangleBlock& b, unsigned lanes, float t_min,
+                                                 float t_max, float (&entry)[TriangleBlock::kSize]) const {
       if (!usable_) {
         for (float& e : entry) e = -INFINITY;
         return lanes;
@@ -153,9 +161,10 @@ class TriangleRay {
         F x[3], y[3], z[3];
         for (int k = 0; k < 3; ++k) {
           F px, py, pz;
-          load(px, b.v[k][row_[0]] + first);
-          load(py, b.v[k][row_[1]] + first);
-          load(pz, b.v[k][row_[2]] + first);
+          const char* rows = reinterpret_cast<const char*>(b.v[k]);
+          load(px, reinterpret_cast<const float*>(rows + row_offset_[0]) + first);
+          load(py, reinterpret_cast<const float*>(rows + row_offset_[1]) + first);
+          load(pz, reinterpret_cast<const float*>(rows + row_offset_[2]) + first);
           pz -= origin_[2];
           x[k] = (px - origin_[0]) - shear_x_ * pz;
           y[k] = (py - origin_[1]) - shear_y_ * pz;
@@ -191,8 +200,11 @@ class TriangleRay {
     }
 
    private:
-    /// The rows of the ray's sheared x, y and its z axis, and the origin in those rows.
-    int row_[3];
+    /// The byte offsets within a vertex's rows of the ray's sheared x, y and its z axis (added to the
+    /// vertex's address: a row index cost a sign extension and a shift per load), and the origin in those
+    /// rows.
+    using Row = float[TriangleBlock::kSize];
+    std::ptrdiff_t row_offset_[3];
     F origin_[3];
     F shear_x_, shear_y_, depth_scale_;
     float origin_magnitude_, depth_scale_magnitude_;
