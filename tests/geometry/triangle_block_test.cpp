@@ -92,6 +92,16 @@ void check_never_drops_a_hit(uint64_t seed) {
     float entry[TriangleBlock::kSize];
     const unsigned kept = triangle_ray.candidates<L>(t.block, snell::geometry::float_below(t_min),
                                                      snell::geometry::float_above(t_max), entry);
+    // The error terms an owner computes once per ray from scales at least the block's own (the largest
+    // over its blocks: TriangleScales) keep at least the same lanes.
+    const TriangleRay::Lanes<L> lanes(triangle_ray);
+    const auto grow = static_cast<float>(std::pow(10.0, uniform(rng, 0, 3)));
+    float wide_entry[TriangleBlock::kSize];
+    const unsigned kept_wide =
+        lanes.candidates_among(t.block, (1u << t.block.count) - 1, snell::geometry::float_below(t_min),
+                               snell::geometry::float_above(t_max), wide_entry,
+                               lanes.errors(t.block.magnitude * grow, t.block.longest_edge * grow));
+    ASSERT_EQ(kept_wide & kept, kept) << "trial " << trial;
     for (int l = 0; l < TriangleBlock::kSize; ++l) {
       TriangleHit hit;
       if (!intersect_triangle(t.v[l][0], t.v[l][1], t.v[l][2], ray, t_min, t_max, hit)) {
@@ -101,6 +111,7 @@ void check_never_drops_a_hit(uint64_t seed) {
       ++double_hits;
       ASSERT_TRUE(kept >> l & 1) << "trial " << trial << " lane " << l << " t " << hit.t;
       EXPECT_LE(entry[l], hit.t) << "trial " << trial << " lane " << l;
+      EXPECT_LE(wide_entry[l], hit.t) << "trial " << trial << " lane " << l;
     }
   }
   EXPECT_GT(double_hits, 12000);

@@ -71,6 +71,7 @@ Bvh::Bvh(const scene::Scene& scene) {
     return static_cast<uint32_t>(blocks_.size() - 1) | kTriangleLeaf;
   });
   blocks_.shrink_to_fit();
+  for (const geometry::TriangleBlock& block : blocks_) scales_.include(block);
   stats_ = structure_stats(scene.objects.size(), unbounded_.size(), tree_.node_count(),
                            tree_.bytes() + objects_.size() * sizeof(objects_[0]) +
                                triangles_.size() * sizeof(PlainTriangle) +
@@ -85,6 +86,10 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
   const float t_min = geometry::float_below(nearest.t_min());
   geometry::FloatAboveOnChange float_t_max(nearest.t_max());
   const int shift = visible_shift(nearest.kind());
+  // Error terms for every block at once where the scales allow (most of the filter's scalar work per block;
+  // random rays through 100k triangles: about 5% fewer instructions), else each block's own.
+  const bool uniform_errors = scales_.finite();
+  const auto errors = triangle_ray.errors(scales_.magnitude, scales_.longest_edge);
   const auto leaf = [&](uint32_t label, uint32_t count, double& t_max) __attribute__((always_inline)) {
     bool hit = false;
     if (label & kTriangleLeaf) {
@@ -95,7 +100,10 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
         for (uint32_t m = visible; m != 0; m &= m - 1)
           count_object_test(*triangles_[block.first + std::countr_zero(m)].object);
       float entry[geometry::TriangleBlock::kSize];
-      uint32_t m = triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry);
+      uint32_t m =
+          uniform_errors
+              ? triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry, errors)
+              : triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry);
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > nearest.t_max()) continue;

@@ -38,6 +38,8 @@ class Bvh final : public Accelerator {
   std::vector<const scene::Object*> objects_;  // in leaf order
   std::vector<PlainTriangle> triangles_;       // by the blocks' ids
   std::vector<geometry::TriangleBlock> blocks_;
+  /// The blocks' largest error scales: the filter's error terms are computed once per query from them.
+  geometry::TriangleScales scales_;
   std::vector<const scene::Object*> unbounded_;
   AcceleratorStats stats_;
 };

@@ -75,6 +75,19 @@ struct alignas(64) TriangleBlock {
 
 static_assert(sizeof(TriangleBlock) == 5 * 64, "five cache lines");
 
+/// The largest error scales over an owner's blocks (TriangleBlock::magnitude and longest_edge): the filter's
+/// error terms grow with both, so terms computed from these once per ray hold for every block, and spare
+/// each block their arithmetic. Not usable (finite() false) where a vertex lies beyond float's range.
+struct TriangleScales {
+  float magnitude = 0;
+  float longest_edge = 0;
+  void include(const TriangleBlock& b) {
+    magnitude = std::max(magnitude, b.magnitude);
+    longest_edge = std::max(longest_edge, b.longest_edge);
+  }
+  bool finite() const { return std::isfinite(magnitude) && std::isfinite(longest_edge); }
+};
+
 /// One ray prepared for TriangleBlock tests: its largest axis, shear and origin in float.
 class TriangleRay {
  public:
@@ -139,11 +152,31 @@ class TriangleRay {
       return candidates_among(b, (1u << b.count) - 1, t_min, t_max, entry);
     }
 
+    /// The filter's error terms for this ray and blocks of the given scales (or any smaller ones).
+    struct Errors {
+      float shear, edge_constant, depth;
+    };
+    SNELL_LANES_INLINE Errors errors(float magnitude, float longest_edge) const {
+      constexpr float u = 0x1p-24f;
+      const float r = magnitude + origin_magnitude_;
+      const float shear = 10 * u * r;
+      // The constant part of the edge function bound: 2 delta^2, and the double test's own error.
+      return {shear, 2 * shear * shear + 0x1p-40f * r * longest_edge, 3.5f * u * r * depth_scale_magnitude_};
+    }
+
     /// candidates() restricted to the lanes set in `lanes` (a subset of those in use): for an owner that
     /// keeps such a mask per block anyway (the scene BVH's lanes visible to each ray kind), which spares the
     /// mask of the lanes in use.
     SNELL_LANES_INLINE unsigned candidates_among(const TriangleBlock& b, unsigned lanes, float t_min,
                                                  float t_max, float (&entry)[TriangleBlock::kSize]) const {
+      return candidates_among(b, lanes, t_min, t_max, entry, errors(b.magnitude, b.longest_edge));
+    }
+
+    /// candidates_among with error terms computed by errors() for scales at least the block's own (once per
+    /// ray, for all blocks of an owner: TriangleScales).
+    SNELL_LANES_INLINE unsigned candidates_among(const TriangleBlock& b, unsigned lanes, float t_min,
+                                                 float t_max, float (&entry)[TriangleBlock::kSize],
+                                                 const Errors& errors) const {
       if (!usable_) {
         for (float& e : entry) e = -INFINITY;
         return lanes;
@@ -151,11 +184,8 @@ class TriangleRay {
       using math::lanes::load;
       using math::lanes::splat;
       constexpr float u = 0x1p-24f;
-      const float r = b.magnitude + origin_magnitude_;
-      const float shear_error = 10 * u * r;
-      // The constant part of the edge function bound: 2 delta^2, and the double test's own error.
-      const float edge_constant = 2 * shear_error * shear_error + 0x1p-40f * r * b.longest_edge;
-      const float depth_error = 3.5f * u * r * depth_scale_magnitude_;
+      const float shear_error = errors.shear, edge_constant = errors.edge_constant,
+                  depth_error = errors.depth;
       unsigned mask = 0;
       for (int first = 0; first < TriangleBlock::kSize; first += L) {
         F x[3], y[3], z[3];

@@ -38,6 +38,7 @@ TriangleTree::TriangleTree(std::span<const math::Vec3> vertices, std::span<const
     return static_cast<uint32_t>(blocks_.size() - 1);
   });
   blocks_.shrink_to_fit();
+  for (const TriangleBlock& block : blocks_) scales_.include(block);
 }
 
 }  // namespace snell::geometry

@@ -32,10 +32,15 @@ class TriangleTree {
     const TriangleRay::Lanes<L> triangle_ray{TriangleRay(ray)};
     const float low = float_below(t_min);
     FloatAboveOnChange high(t_max);
+    const bool uniform_errors = scales_.finite();
+    const auto errors = triangle_ray.errors(scales_.magnitude, scales_.longest_edge);
     const auto leaf = [&](uint32_t block, uint32_t, double& t) __attribute__((always_inline)) {
       const TriangleBlock& b = blocks_[block];
       float entry[TriangleBlock::kSize];
-      for (unsigned m = triangle_ray.candidates(b, low, high(t), entry); m != 0; m &= m - 1) {
+      const unsigned lanes = (1u << b.count) - 1;
+      for (unsigned m = uniform_errors ? triangle_ray.candidates_among(b, lanes, low, high(t), entry, errors)
+                                       : triangle_ray.candidates_among(b, lanes, low, high(t), entry);
+           m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > t) continue;
         const uint32_t face = bvh_.order()[b.first + lane];
@@ -56,6 +61,8 @@ class TriangleTree {
  private:
   WideBvh bvh_;
   std::vector<TriangleBlock> blocks_;
+  /// The blocks' largest error scales (the filter's error terms once per walk where they are finite).
+  TriangleScales scales_;
 };
 
 }  // namespace snell::geometry
