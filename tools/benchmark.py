@@ -57,6 +57,11 @@ def ssim(a, b):
         return None
 
 
+# The repetitions of all benchmarks run in random order, so that a slow spell of the shared machine falls on
+# Embree and the accelerator compared with it alike, not on the repetitions of one of them.
+INTERLEAVED = ["--benchmark_enable_random_interleaving=true"]
+
+
 def throughput(bench, runs):
     """Median rays/s per (accelerator, ray set) from snell_bench at 10,000 spheres."""
     if not Path(bench).is_file():
@@ -64,7 +69,7 @@ def throughput(bench, runs):
               file=sys.stderr)
         return None
     out = subprocess.run([bench, "--benchmark_filter=(embree|bvh|octree|grid)_(primary|random)/10000$",
-                          f"--benchmark_repetitions={runs}", "--benchmark_format=json"],
+                          f"--benchmark_repetitions={runs}", *INTERLEAVED, "--benchmark_format=json"],
                          capture_output=True, text=True, check=True)
     samples = {}
     for b in json.loads(out.stdout)["benchmarks"]:
@@ -86,7 +91,7 @@ def triangle_throughput(bench, runs):
     if not Path(bench).is_file():
         return None
     out = subprocess.run([bench, "--benchmark_filter=^triangles/", f"--benchmark_repetitions={runs}",
-                          "--benchmark_format=json"], capture_output=True, text=True, check=True)
+                          *INTERLEAVED, "--benchmark_format=json"], capture_output=True, text=True, check=True)
     samples, costs = {}, {}
     for b in json.loads(out.stdout)["benchmarks"]:
         if b.get("run_type") != "iteration":
