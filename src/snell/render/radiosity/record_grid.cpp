@@ -186,7 +186,7 @@ void RecordGrid::gather(const ReuseQuery& q, Blend& blend) const {
         if (distance_squared_exact >= reach * reach) continue;
         // A lower bound of reuse_error: the shrunk radius, a blend of the harmonic mean and the nearest
         // distance, is at most the larger of the two, and the rotation term is reuse_error's own. Most
-        // records that get this far fail here (gamma_showcase: 7 of 8), before reuse_weight's divisions
+        // records that get this far fail here (gamma_showcase: 6 of 10), before reuse_weight's divisions
         // and square roots; the slack covers the blend's rounding.
         const double rotation = 2 * std::sqrt(std::fabs(1 - dot(q.normal, r.normal)));
         if (std::sqrt(distance_squared_exact) / std::max(r.harmonic_mean, r.nearest_distance) + rotation >=
