@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "shape_checks.hpp"
+#include "snell/geometry/triangle_kernel.hpp"
+#include "snell/math/pcg32.hpp"
 
 namespace snell::geometry {
 namespace {
@@ -80,6 +82,42 @@ TEST(HeightFieldTest, PassesShapeChecks) {
           grid_of(17, 9, [](double x, double z) { return 0.5 + 0.4 * std::sin(7 * x) * std::cos(5 * z); }),
           false, 0),
       false, 500);
+}
+
+TEST(HeightFieldTest, NearestHitIsTheNearestOfItsTriangles) {
+  // Ridges, plateaus and pits over 70 x 53 samples (blocks of cells the walk crosses in one step where the
+  // ray passes above or below them), against every cell's two triangles tested one by one.
+  const HeightGrid grid = grid_of(70, 53, [](double x, double z) {
+    const double ridge = 0.5 + 0.45 * std::sin(9 * x) * std::cos(7 * z);
+    return x > 0.6 && z < 0.3 ? 0.2 : ridge;
+  });
+  const HeightField hf(grid, false, 0);
+  const auto at = [&](int i, int k) {
+    return Vec3(i / (grid.width - 1.0), grid.at(i, k), k / (grid.depth - 1.0));
+  };
+  math::Pcg32 rng(5);
+  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * rng.next_double(); };
+  int hits = 0;
+  for (int n = 0; n < 3000; ++n) {
+    const Vec3 origin{uniform(-0.5, 1.5), uniform(n % 3 == 0 ? 0.0 : 1.0, 2.0), uniform(-0.5, 1.5)};
+    const Vec3 target{uniform(0, 1), uniform(0, 1), uniform(0, 1)};
+    const Ray ray{origin, target - origin, 0};
+    double nearest = math::kInfinity;
+    for (int k = 0; k + 1 < grid.depth; ++k)
+      for (int i = 0; i + 1 < grid.width; ++i) {
+        TriangleHit t;
+        if (intersect_triangle(at(i, k), at(i, k + 1), at(i + 1, k), ray, 1e-9, nearest, t)) nearest = t.t;
+        if (intersect_triangle(at(i + 1, k + 1), at(i + 1, k), at(i, k + 1), ray, 1e-9, nearest, t))
+          nearest = t.t;
+      }
+    LocalHit hit;
+    const bool found = hf.intersect(ray, 1e-9, math::kInfinity, hit);
+    ASSERT_EQ(found, nearest < math::kInfinity) << "ray " << n;
+    if (!found) continue;
+    ++hits;
+    EXPECT_NEAR(hit.t, nearest, 1e-9 * (1 + nearest)) << "ray " << n;
+  }
+  EXPECT_GT(hits, 1500);
 }
 
 }  // namespace

@@ -34,6 +34,19 @@ HeightField::HeightField(HeightGrid grid, bool smooth, double water_level)
       y_lo_ = std::min(y_lo_, cell_lo_[cell]);
       y_hi_ = std::max(y_hi_, cell_hi_[cell]);
     }
+  blocks_w_ = (cw + kBlock - 1) / kBlock;
+  const int blocks_d = (cd + kBlock - 1) / kBlock;
+  block_lo_.assign(static_cast<std::size_t>(blocks_w_) * static_cast<std::size_t>(blocks_d), INFINITY);
+  block_hi_.assign(block_lo_.size(), -INFINITY);
+  for (int k = 0; k < cd; ++k)
+    for (int i = 0; i < cw; ++i) {
+      const std::size_t cell =
+          static_cast<std::size_t>(k) * static_cast<std::size_t>(cw) + static_cast<std::size_t>(i);
+      const std::size_t block = static_cast<std::size_t>(k / kBlock) * static_cast<std::size_t>(blocks_w_) +
+                                static_cast<std::size_t>(i / kBlock);
+      block_lo_[block] = std::min(block_lo_[block], cell_lo_[cell]);
+      block_hi_[block] = std::max(block_hi_[block], cell_hi_[cell]);
+    }
 }
 
 Bounds3 HeightField::bounds() const {
@@ -126,9 +139,45 @@ void HeightField::walk(const Ray& ray, double t_min, double t_max, Sink&& sink) 
   double next_z = next_boundary(g.origin.z, g.direction.z, k, step_k);
   const double dx = g.direction.x != 0 ? step_i / g.direction.x : math::kInfinity;
   const double dz = g.direction.z != 0 ? step_k / g.direction.z : math::kInfinity;
-  const int cells_w = grid_.width - 1;
+  const int cells_w = grid_.width - 1, cells_d = grid_.depth - 1;
   double ta = t0;
+  int block_i = -1, block_k = -1;
   for (;;) {
+    if (i / kBlock != block_i || k / kBlock != block_k) {
+      // A new block: if the ray passes above or below all of it, go straight to the cell beyond it.
+      block_i = i / kBlock, block_k = k / kBlock;
+      const double exit_x =
+          next_boundary(g.origin.x, g.direction.x, block_i * kBlock + (step_i > 0 ? kBlock - 1 : 0), step_i);
+      const double exit_z =
+          next_boundary(g.origin.z, g.direction.z, block_k * kBlock + (step_k > 0 ? kBlock - 1 : 0), step_k);
+      const double te = std::min({exit_x, exit_z, t1});
+      const double ya = g.origin.y + ta * g.direction.y, ye = g.origin.y + te * g.direction.y;
+      const std::size_t block = static_cast<std::size_t>(block_k) * static_cast<std::size_t>(blocks_w_) +
+                                static_cast<std::size_t>(block_i);
+      // A margin over the rounding of the heights along the ray, which the cells' own tests compute at
+      // other parameters.
+      const double slack = 1e-9 * (std::fabs(ya) + std::fabs(ye) + 1);
+      if (std::min(ya, ye) > block_hi_[block] + slack || std::max(ya, ye) < block_lo_[block] - slack) {
+        if (te >= t1) return;
+        const auto clamp_to_block = [](double v, int block_start, int cells) {
+          return std::clamp(static_cast<int>(std::floor(v)), block_start,
+                            std::min(block_start + kBlock, cells) - 1);
+        };
+        const Vec3 at = g.at(te);
+        if (exit_x <= exit_z) {
+          i = step_i > 0 ? (block_i + 1) * kBlock : block_i * kBlock - 1;
+          k = clamp_to_block(at.z, block_k * kBlock, cells_d);
+        } else {
+          k = step_k > 0 ? (block_k + 1) * kBlock : block_k * kBlock - 1;
+          i = clamp_to_block(at.x, block_i * kBlock, cells_w);
+        }
+        if (i < 0 || i >= cells_w || k < 0 || k >= cells_d) return;
+        next_x = next_boundary(g.origin.x, g.direction.x, i, step_i);
+        next_z = next_boundary(g.origin.z, g.direction.z, k, step_k);
+        ta = te;
+        continue;
+      }
+    }
     const double tb = std::min({next_x, next_z, t1});
     const std::size_t cell =
         static_cast<std::size_t>(k) * static_cast<std::size_t>(cells_w) + static_cast<std::size_t>(i);
@@ -148,7 +197,7 @@ void HeightField::walk(const Ray& ray, double t_min, double t_max, Sink&& sink) 
       next_x += dx;
     } else {
       k += step_k;
-      if (k < 0 || k >= grid_.depth - 1) return;
+      if (k < 0 || k >= cells_d) return;
       next_z += dz;
     }
     ta = tb;

@@ -19,7 +19,8 @@ struct HeightGrid {
 /// POV-Ray `height_field` (POV-Ray 3.7 reference, "Height Field"): a grid of samples spread over the unit
 /// square x, z in [0, 1], each cell split into two triangles along the same diagonal as POV-Ray
 /// (heightfield.cpp); the solid is what lies below the surface. Rays walk the cells with a 2D DDA
-/// (Amanatides & Woo 1987) and skip cells whose height range the ray passes above or below.
+/// (Amanatides & Woo 1987) and skip cells, and blocks of cells, whose height range the ray passes above or
+/// below.
 class HeightField final : public Shape {
  public:
   /// `water_level`: heights below it are raised to it, and cells entirely at it are left out.
@@ -47,6 +48,11 @@ class HeightField final : public Shape {
   double water_;
   /// Per cell: lowest and highest corner height.
   std::vector<float> cell_lo_, cell_hi_;
+  /// The same over blocks of kBlock x kBlock cells (the last ones in a row or column smaller): the walk
+  /// crosses a block the ray passes above or below in one step instead of cell by cell.
+  static constexpr int kBlock = 8;
+  int blocks_w_ = 0;
+  std::vector<float> block_lo_, block_hi_;
   float y_lo_ = 0, y_hi_ = 0;
 };
 
