@@ -30,33 +30,36 @@ double shrunk_radius(const Record& r, const Vec3& delta_unit) {
   return towards_nearest * r.nearest_distance + (1 - towards_nearest) * r.harmonic_mean;
 }
 
-/// reuse_error given the query's offset from the record and its length (computed once by reuse_weight,
-/// which needs both again).
-double error_at(const Record& r, const ReuseQuery& q, const Vec3& delta, double dist) {
-  const double radius = dist > kSamePoint ? shrunk_radius(r, delta / dist) : r.harmonic_mean;
-  const double translation = radius > 0 ? dist / radius : (dist > kSamePoint ? math::kInfinity : 0.0);
-  const double rotation = 2 * std::sqrt(std::fabs(1 - dot(q.normal, r.normal)));
-  return translation + rotation;
+/// The query point's offset from a record, its length and the error's rotation term: what reuse_error,
+/// reuse_weight and the grid's own lower bound all need, computed once.
+struct Offset {
+  Offset(const Record& r, const ReuseQuery& q) : Offset(r, q, q.point - r.point) {}
+  /// With the offset (and so its squared length) already at hand.
+  Offset(const Record& r, const ReuseQuery& q, const Vec3& d, double distance_squared)
+      : delta(d),
+        dist(std::sqrt(distance_squared)),
+        rotation(2 * std::sqrt(std::fabs(1 - dot(q.normal, r.normal)))) {}
+  Offset(const Record& r, const ReuseQuery& q, const Vec3& d) : Offset(r, q, d, length_squared(d)) {}
+  Vec3 delta;
+  double dist;
+  double rotation;
+};
+
+double error_at(const Record& r, const Offset& o) {
+  const double radius = o.dist > kSamePoint ? shrunk_radius(r, o.delta / o.dist) : r.harmonic_mean;
+  const double translation = radius > 0 ? o.dist / radius : (o.dist > kSamePoint ? math::kInfinity : 0.0);
+  return translation + o.rotation;
 }
 
-}  // namespace
-
-double reuse_error(const Record& r, const ReuseQuery& q) {
-  const Vec3 delta = q.point - r.point;
-  return error_at(r, q, delta, length(delta));
-}
-
-double reuse_weight(const Record& r, const ReuseQuery& q) {
-  const Vec3 delta = q.point - r.point;
-  const double dist = length(delta);
-  const double error = error_at(r, q, delta, dist);
+double weight_at(const Record& r, const ReuseQuery& q, const Offset& o) {
+  const double error = error_at(r, o);
   if (!(error < q.error_bound)) return 0;
   // Is the record's point in front of the query's surface (Ward 1988's test, POV-Ray's tolerance)?
   double in_front = 1;
-  if (dist > kSamePoint) {
+  if (o.dist > kSamePoint) {
     const Vec3 half = q.normal + r.normal;
     const double half_length = length(half);
-    in_front = half_length > 0 ? dot(delta / dist, half) / half_length : 0;
+    in_front = half_length > 0 ? dot(o.delta / o.dist, half) / half_length : 0;
   }
   if (in_front <= kInFrontLimit) return 0;
   const double t = error / q.error_bound;  // 0..1
@@ -67,6 +70,16 @@ double reuse_weight(const Record& r, const ReuseQuery& q) {
     weight = 1 - t;
   if (in_front <= 0) weight *= 1 - in_front / kInFrontLimit;
   return weight > kLeastWeight ? weight : 0;
+}
+
+}  // namespace
+
+double reuse_error(const Record& r, const ReuseQuery& q) {
+  return error_at(r, Offset(r, q));
+}
+
+double reuse_weight(const Record& r, const ReuseQuery& q) {
+  return weight_at(r, q, Offset(r, q));
 }
 
 uint64_t RecordGrid::cell_key(int level, int64_t x, int64_t y, int64_t z) {
@@ -111,7 +124,7 @@ void RecordGrid::insert(const Record& r) {
   const auto at_or_above = std::lower_bound(levels_.begin(), levels_.end(), level,
                                             [](const Level& l, int v) { return l.level < v; });
   if (at_or_above == levels_.end() || at_or_above->level != level)
-    levels_.insert(at_or_above, Level{level, side, 1 / side});
+    levels_.insert(at_or_above, Level{level, 1 / side});
   auto range = [&](double c) {
     return std::pair{static_cast<int64_t>(std::floor((c - reach) / side)),
                      static_cast<int64_t>(std::floor((c + reach) / side))};
@@ -182,17 +195,18 @@ void RecordGrid::gather(const ReuseQuery& q, Blend& blend) const {
            kept &= kept - 1) {
         const Record& r = records_[cell.index[group + static_cast<uint32_t>(std::countr_zero(kept))]];
         const double reach = r.harmonic_mean * q.error_bound;
-        const double distance_squared_exact = length_squared(q.point - r.point);
+        const Vec3 delta = q.point - r.point;
+        const double distance_squared_exact = length_squared(delta);
         if (distance_squared_exact >= reach * reach) continue;
+        const Offset offset(r, q, delta, distance_squared_exact);
         // A lower bound of reuse_error: the shrunk radius, a blend of the harmonic mean and the nearest
         // distance, is at most the larger of the two, and the rotation term is reuse_error's own. Most
-        // records that get this far fail here (gamma_showcase: 6 of 10), before reuse_weight's divisions
-        // and square roots; the slack covers the blend's rounding.
-        const double rotation = 2 * std::sqrt(std::fabs(1 - dot(q.normal, r.normal)));
-        if (std::sqrt(distance_squared_exact) / std::max(r.harmonic_mean, r.nearest_distance) + rotation >=
+        // records that get this far fail here (gamma_showcase: 6 of 10), before the weight's divisions and
+        // square roots; the slack covers the blend's rounding.
+        if (offset.dist / std::max(r.harmonic_mean, r.nearest_distance) + offset.rotation >=
             q.error_bound * (1 + 1e-12))
           continue;
-        if (const double w = reuse_weight(r, q); w > 0) blend.add(r, w);
+        if (const double w = weight_at(r, q, offset); w > 0) blend.add(r, w);
       }
     }
   }

@@ -93,10 +93,10 @@ class RecordGrid {
     uint32_t size = 0;
     void add(uint32_t record, const Record& r);
   };
-  /// A grid level: cell side 2^level and its inverse.
+  /// A grid level: cell side 2^level, and the side's inverse (exact: a power of two).
   struct Level {
     int level;
-    double side, inverse_side;
+    double inverse_side;
   };
   double reach_factor_;
   std::vector<Record> records_;
