@@ -23,6 +23,10 @@ HeightField::HeightField(HeightGrid grid, bool smooth, double water_level)
   const int cw = grid_.width - 1, cd = grid_.depth - 1;
   cell_lo_.resize(static_cast<std::size_t>(cw) * static_cast<std::size_t>(cd));
   cell_hi_.resize(cell_lo_.size());
+  blocks_w_ = (cw + kBlock - 1) / kBlock;
+  const int blocks_d = (cd + kBlock - 1) / kBlock;
+  block_lo_.assign(static_cast<std::size_t>(blocks_w_) * static_cast<std::size_t>(blocks_d), INFINITY);
+  block_hi_.assign(block_lo_.size(), -INFINITY);
   y_lo_ = math::kInfinity, y_hi_ = -math::kInfinity;
   for (int k = 0; k < cd; ++k)
     for (int i = 0; i < cw; ++i) {
@@ -33,15 +37,6 @@ HeightField::HeightField(HeightGrid grid, bool smooth, double water_level)
       cell_hi_[cell] = std::max({a, b, c, d});
       y_lo_ = std::min(y_lo_, cell_lo_[cell]);
       y_hi_ = std::max(y_hi_, cell_hi_[cell]);
-    }
-  blocks_w_ = (cw + kBlock - 1) / kBlock;
-  const int blocks_d = (cd + kBlock - 1) / kBlock;
-  block_lo_.assign(static_cast<std::size_t>(blocks_w_) * static_cast<std::size_t>(blocks_d), INFINITY);
-  block_hi_.assign(block_lo_.size(), -INFINITY);
-  for (int k = 0; k < cd; ++k)
-    for (int i = 0; i < cw; ++i) {
-      const std::size_t cell =
-          static_cast<std::size_t>(k) * static_cast<std::size_t>(cw) + static_cast<std::size_t>(i);
       const std::size_t block = static_cast<std::size_t>(k / kBlock) * static_cast<std::size_t>(blocks_w_) +
                                 static_cast<std::size_t>(i / kBlock);
       block_lo_[block] = std::min(block_lo_[block], cell_lo_[cell]);
