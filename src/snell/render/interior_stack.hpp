@@ -2,6 +2,7 @@
 // The solids a ray is inside, innermost last, as POV-Ray's Ray::GetInteriors() tracks them for refraction
 // (POV-Ray 3.7 trace.cpp, ComputeRefraction: entering pushes, leaving removes). Fixed capacity: deeper
 // nesting than kCapacity is treated as not entering, which only affects the ior of absurd scenes.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 
@@ -12,6 +13,19 @@ namespace snell::render {
 class InteriorStack {
  public:
   static constexpr size_t kCapacity = 16;
+
+  // Only the first size_ slots are ever read, so a new stack clears none and a copy copies only those:
+  // every camera ray starts with an empty stack, whose 136 bytes were cleared by a `rep stos` (60% of
+  // trace_camera_ray in pigmap.pov's profile).
+  InteriorStack() {}
+  InteriorStack(const InteriorStack& other) : size_(other.size_) {
+    std::copy_n(other.items_.begin(), size_, items_.begin());
+  }
+  InteriorStack& operator=(const InteriorStack& other) {
+    size_ = other.size_;
+    std::copy_n(other.items_.begin(), size_, items_.begin());
+    return *this;
+  }
 
   bool empty() const { return size_ == 0; }
   size_t size() const { return size_; }
@@ -37,7 +51,7 @@ class InteriorStack {
   }
 
  private:
-  std::array<const scene::Object*, kCapacity> items_{};
+  std::array<const scene::Object*, kCapacity> items_;
   size_t size_ = 0;
 };
 

@@ -32,21 +32,17 @@ void Object::bake_placement() {
 
 SurfaceHit Object::placed_hit(const Object& object, const math::Transform& transform, bool inverse,
                               const Ray& world_ray, const geometry::LocalHit& local) {
-  SurfaceHit hit;
-  hit.t = local.t;
-  hit.point = world_ray.at(local.t);
-  hit.normal = normalize(transform.normal(local.normal));
-  if (inverse) hit.normal = -hit.normal;
-  hit.shading_normal = length_squared(local.shading_normal) > 0
-                           ? normalize(transform.normal(local.shading_normal))
-                           : hit.normal;
-  if (inverse && length_squared(local.shading_normal) > 0) hit.shading_normal = -hit.shading_normal;
-  hit.uv = local.uv;
-  hit.texture_point = hit.point;
-  hit.object = &object;
-  hit.solid = &object;
-  hit.part = local.part;
-  return hit;
+  const Vec3 point = world_ray.at(local.t);
+  Vec3 normal = normalize(transform.normal(local.normal));
+  if (inverse) normal = -normal;
+  Vec3 shading_normal = normal;
+  if (length_squared(local.shading_normal) > 0) {
+    shading_normal = normalize(transform.normal(local.shading_normal));
+    if (inverse) shading_normal = -shading_normal;
+  }
+  // Every member given at once: a default-constructed hit filled in afterwards was first cleared (a
+  // 144-byte `rep stos`, 15% of this function in pigmap.pov's profile).
+  return SurfaceHit{local.t, point, normal, shading_normal, local.uv, point, &object, &object, local.part};
 }
 
 bool Object::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit,
