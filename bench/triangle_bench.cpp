@@ -9,6 +9,7 @@
 #include <embree3/rtcore.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -194,6 +195,14 @@ scene::Scene triangle_scene(bool as_mesh, int which) {
   return s;
 }
 
+/// The query of ray set `kind` through a snell accelerator: an occlusion query for shadow rays, else the
+/// nearest hit.
+bool snell_query(const accel::Accelerator& accel, const Query& q, int kind) {
+  if (kind == 2) return accel.occluder(q.ray, 1e-4, q.t_max, scene::RayKind::shadow) != nullptr;
+  scene::SurfaceHit hit;
+  return accel.intersect(q.ray, 1e-4, q.t_max, scene::RayKind::camera, hit);
+}
+
 void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool as_mesh, int which) {
   const scene::Scene s = triangle_scene(as_mesh, which);
   const auto accel = accel::make_accelerator(accel_kind, s);
@@ -201,12 +210,7 @@ void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool
   // One query before timing: the mesh shape builds its tree on the first one.
   scene::SurfaceHit warm_up;
   accel->intersect(qs[0].ray, 1e-4, qs[0].t_max, scene::RayKind::camera, warm_up);
-  // The query of the ray set: an occlusion query for shadow rays, else the nearest hit.
-  const auto hit_by = [&](const Query& q) {
-    if (kind == 2) return accel->occluder(q.ray, 1e-4, q.t_max, scene::RayKind::shadow) != nullptr;
-    scene::SurfaceHit hit;
-    return accel->intersect(q.ray, 1e-4, q.t_max, scene::RayKind::camera, hit);
-  };
+  const auto hit_by = [&](const Query& q) { return snell_query(*accel, q, kind); };
   // One untimed pass with the cost tally on: node visits and primitive tests per ray, the structure's
   // share of the figures (accel/query_cost.hpp).
   accel::QueryCost cost;
@@ -219,6 +223,32 @@ void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool
   count_rays(state, hits, qs.size());
   state.counters["nodes/ray"] = static_cast<double>(cost.nodes) / static_cast<double>(qs.size());
   state.counters["tests/ray"] = static_cast<double>(cost.primitives) / static_cast<double>(qs.size());
+}
+
+/// Embree alone and the own BVH timed in turns on the same rays, a whole pass over the ray set each, so that
+/// the drift of a shared machine's speed (tens of percent within minutes here) falls on both alike: the
+/// counter `bvh/embree` is the ratio of their throughputs, where separate runs of the two scatter by +-10%.
+/// Turns of a pass each keep both in their steady state: with turns of 256 or 2048 rays each evicted the
+/// other's nodes from the caches and Embree, the faster, lost more (the ratio rose from 0.55 to 0.63-0.66).
+void bvh_against_embree(benchmark::State& state, int kind) {
+  const RawEmbree embree(soup(0));
+  const scene::Scene s = triangle_scene(false, 0);
+  const auto bvh = accel::make_accelerator("bvh", s);
+  const std::vector<Query> qs = queries(soup(0), kind);
+  using Clock = std::chrono::steady_clock;
+  Clock::duration embree_time{}, bvh_time{};
+  size_t embree_hits = 0, bvh_hits = 0;
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    for (const Query& q : qs) embree_hits += embree.query(q, kind == 2);
+    const auto middle = Clock::now();
+    for (const Query& q : qs) bvh_hits += snell_query(*bvh, q, kind);
+    embree_time += middle - start;
+    bvh_time += Clock::now() - middle;
+  }
+  benchmark::DoNotOptimize(embree_hits + bvh_hits);
+  state.counters["bvh/embree"] =
+      std::chrono::duration<double>(embree_time).count() / std::chrono::duration<double>(bvh_time).count();
 }
 
 void register_all() {
@@ -237,6 +267,10 @@ void register_all() {
                                    a, kind, true, 0)
           ->Unit(benchmark::kMillisecond);
   }
+  for (int kind = 0; kind < 3; ++kind)
+    benchmark::RegisterBenchmark(("triangles/bvh_against_embree_" + std::string(kKindNames[kind])).c_str(),
+                                 bvh_against_embree, kind)
+        ->Unit(benchmark::kMillisecond);
   // Incoherent rays through the slivers: Embree alone (its high-quality build makes spatial splits) and
   // the own BVH, which makes them too (tests/geometry/wide_bvh_test.cpp prints the visits without).
   benchmark::RegisterBenchmark("slivers/raw_embree_random", raw_embree, 1, 1)->Unit(benchmark::kMillisecond);
