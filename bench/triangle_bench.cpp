@@ -9,6 +9,7 @@
 #include <embree3/rtcore.h>
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -89,15 +90,21 @@ const char* kKindNames[] = {"primary", "random", "shadow"};
 
 /// Embree on its own: a float triangle geometry, high-quality build, one rtcIntersect1 / rtcOccluded1 per
 /// ray with the same origin, direction and window as snell's queries get.
+/// A byte count in MiB, for the benchmarks' memory counters.
+double mebibytes(size_t bytes) {
+  return static_cast<double>(bytes) / (1 << 20);
+}
+
 class RawEmbree {
  public:
   explicit RawEmbree(const std::vector<std::array<Vec3, 3>>& soup) {
     device_ = rtcNewDevice(nullptr);
-    // Embree reports each allocation and release: the running sum is the memory its scene holds.
+    // Embree reports each allocation and release, from its build threads at once (hence atomic): the
+    // running sum is the memory its scene holds.
     rtcSetDeviceMemoryMonitorFunction(
         device_,
         [](void* user, ssize_t bytes, bool) {
-          *static_cast<ssize_t*>(user) += bytes;
+          *static_cast<std::atomic<ssize_t>*>(user) += bytes;
           return true;
         },
         &bytes_);
@@ -123,7 +130,7 @@ class RawEmbree {
     rtcReleaseDevice(device_);
   }
   /// Bytes Embree holds for the scene: its tree, leaves and the vertex and index buffers.
-  double mebibytes() const { return static_cast<double>(bytes_) / (1 << 20); }
+  size_t bytes() const { return static_cast<size_t>(bytes_.load()); }
   RawEmbree(const RawEmbree&) = delete;
   RawEmbree& operator=(const RawEmbree&) = delete;
 
@@ -157,7 +164,7 @@ class RawEmbree {
  private:
   RTCDevice device_;
   RTCScene scene_;
-  ssize_t bytes_ = 0;
+  std::atomic<ssize_t> bytes_ = 0;
 };
 
 /// The two soups: 0 small triangles, 1 slivers.
@@ -181,7 +188,7 @@ void raw_embree(benchmark::State& state, int kind, int which) {
   for (auto _ : state)
     for (const Query& q : qs) hits += embree.query(q, kind == 2);
   count_rays(state, hits, qs.size());
-  state.counters["MiB"] = embree.mebibytes();
+  state.counters["MiB"] = mebibytes(embree.bytes());
 }
 
 /// The triangles as separate scene objects (one `triangle` each), or as one `mesh` object.
@@ -236,7 +243,7 @@ void snell_accel(benchmark::State& state, const char* accel_kind, int kind, bool
   state.counters["nodes/ray"] = static_cast<double>(cost.nodes) / static_cast<double>(qs.size());
   state.counters["tests/ray"] = static_cast<double>(cost.primitives) / static_cast<double>(qs.size());
   // A mesh's own triangle tree is not in the accelerator's figure: memory is reported for separate objects.
-  if (!as_mesh) state.counters["MiB"] = static_cast<double>(accel->stats().memory_bytes) / (1 << 20);
+  if (!as_mesh) state.counters["MiB"] = mebibytes(accel->stats().memory_bytes);
 }
 
 /// Embree alone and the own BVH timed in turns on the same rays, a whole pass over the ray set each, so that
