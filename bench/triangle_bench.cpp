@@ -4,7 +4,8 @@
 // (the triangles as one `mesh`, under its own BVH). Three ray sets: coherent primary rays (a pinhole
 // camera's grid), incoherent rays (random origins and directions, like diffuse bounces) and shadow rays
 // (occlusion queries from points on the triangles towards a light, most of them blocked part way).
-// Run: build/bench/snell_bench --benchmark_filter='triangles|slivers'
+// Run: build/bench/snell_bench --benchmark_filter='triangles|slivers' (SNELL_BENCH_TRIANGLES=n: soups of n
+// triangles).
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 
@@ -12,6 +13,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -28,7 +31,21 @@ namespace {
 using namespace snell;
 using math::Vec3;
 
-constexpr int kTriangles = 100000;
+/// Triangles in each soup: 100,000, or SNELL_BENCH_TRIANGLES (1 to 10,000,000) for the effect of the
+/// soup's size (the caches) on the ratios.
+int soup_size() {
+  constexpr int kDefault = 100000, kLargest = 10000000;
+  const char* text = std::getenv("SNELL_BENCH_TRIANGLES");
+  if (text == nullptr) return kDefault;
+  char* end = nullptr;
+  const long n = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || n < 1 || n > kLargest) {
+    std::fprintf(stderr, "snell_bench: SNELL_BENCH_TRIANGLES must be a count from 1 to %d, not '%s'\n",
+                 kLargest, text);
+    std::exit(2);
+  }
+  return static_cast<int>(n);
+}
 constexpr int kRays = 1 << 14;
 
 double uniform(math::Pcg32& rng, double lo, double hi) {
@@ -169,8 +186,8 @@ class RawEmbree {
 
 /// The two soups: 0 small triangles, 1 slivers.
 const std::vector<std::array<Vec3, 3>>& soup(int which = 0) {
-  static const std::vector<std::array<Vec3, 3>> small = triangle_soup(kTriangles, 1);
-  static const std::vector<std::array<Vec3, 3>> slivers = triangle_soup(kTriangles, 4);
+  static const std::vector<std::array<Vec3, 3>> small = triangle_soup(soup_size(), 1);
+  static const std::vector<std::array<Vec3, 3>> slivers = triangle_soup(soup_size(), 4);
   return which == 0 ? small : slivers;
 }
 
