@@ -91,6 +91,7 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
   // inside the filter: a flag tested per block there cost more than it saved.
   const bool uniform_errors = scales_.finite();
   const auto errors = triangle_ray.errors(scales_.magnitude, scales_.longest_edge);
+  typename geometry::TriangleRay::Lanes<L>::WindowOnChange window(t_min, nearest.t_max(), errors);
   const auto leaf = [&](uint32_t label, uint32_t count, double& t_max) __attribute__((always_inline)) {
     bool hit = false;
     if (label & kTriangleLeaf) {
@@ -101,10 +102,9 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
         for (uint32_t m = visible; m != 0; m &= m - 1)
           count_object_test(*triangles_[block.first + std::countr_zero(m)].object);
       float entry[geometry::TriangleBlock::kSize];
-      uint32_t m =
-          uniform_errors
-              ? triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry, errors)
-              : triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry);
+      uint32_t m = uniform_errors
+                       ? triangle_ray.candidates_among(block, visible, window(t_max), entry, errors)
+                       : triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry);
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         if (entry[lane] > nearest.t_max()) continue;

@@ -19,12 +19,27 @@
 //    the sum of the six |sheared x, y| (each factor pair's error, and three roundings of products of size
 //    at most S^2 / 4); a lane is dropped only when some function is below -E and some above +E, E that
 //    bound, so the exact functions cannot share a sign;
+//  - S is bounded once per block, not per lane: a ray the double test can find a hit for passes through
+//    (within its tiny error of) the box of the block's vertices, of longest side W, at some point e; a
+//    sheared coordinate is the offset of a vertex p from the ray's point at p's depth along z, which lies
+//    within |p_z - e_z| <= W of e in x and y (|dx/dz|, |dy/dz| <= 1), so each exact |sheared x, y| is at
+//    most 2W and each computed one 2 (W + delta): S <= 12 (W + delta). Of a ray that passes nowhere near
+//    the block the double test finds no hit, so dropping its lanes is right whatever the bound. (Summed
+//    per lane, S cost eleven of about eighty instructions a block.)
 //  - a sheared depth errs by at most 3.1 u R |1 / dz| + u |depth|, and the range is widened by more;
 //  - the double test itself errs (it is Moeller-Trumbore in double, not the exact test): by about
 //    35 * 2^-53 R L in an edge function (L the longest edge), which E also covers, and in its distance by
 //    about 2^-53 R / sin(angle of the ray to the plane), under the depth margin unless the ray lies within
 //    2^-20 of the triangle's plane. Such near edge-on lanes (|U + V + W| <= 2^-20 S^2 + 3 E, which holds
-//    whenever the exact |U + V + W| is below 2^-20 S^2) are always kept, entered at the window's start.
+//    whenever the exact |U + V + W| is below 2^-20 S^2) are never dropped by depth, and entered at the
+//    window's start. The sign test holds for them too: the double test's numerators of b1 and b2 are the
+//    edge functions (scaled), within E of the exact ones, so where those clearly differ in sign b1 and b2
+//    do, or (two clearly of one sign, the third clearly of the other) b1 + b2 exceeds 1 by more than its
+//    roundings, whatever the sign and size of its near-zero determinant;
+//  - the depth range's margins are folded into the window once per window (Window): a lane is dropped
+//    when its nearest vertex depth lies beyond (t_max + D)(1 + 8u), D the depth error, or its farthest
+//    before (t_min - D)(1 -+ 8u), which (roundings included) drops no lane that widening each depth by
+//    2u |depth| + D and comparing with the window would keep.
 // NaN and infinite values (huge vertices, rays float cannot hold) make every comparison that drops a lane
 // fail, so such lanes are kept and the double test decides.
 #include <algorithm>
@@ -48,6 +63,10 @@ struct alignas(64) TriangleBlock {
   /// (infinite where a vertex is beyond float's range: then no lane is ever dropped).
   float magnitude = 0;
   float longest_edge = 0;
+  /// The longest side of the box around the block's vertices (rounded up; infinite like the two above):
+  /// it bounds how far from the ray a vertex can be in the sheared frame, for every ray that passes near
+  /// the block (the filter's error bound).
+  float extent = 0;
   /// Lanes in use: 0 .. count - 1.
   uint32_t count = 0;
   /// 32 bits of the owner's (the accelerator keeps which ray kinds see each triangle).
@@ -69,6 +88,15 @@ struct alignas(64) TriangleBlock {
       }
       const double edge = length(*vertex[(k + 1) % 3] - *vertex[k]);
       longest_edge = std::max(longest_edge, edge < 1e30 ? float_above(edge) : INFINITY);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < static_cast<int>(count); ++l) {
+          lo = std::min(lo, static_cast<double>(v[k][axis][l]));
+          hi = std::max(hi, static_cast<double>(v[k][axis][l]));
+        }
+      extent = std::max(extent, hi - lo < 1e30 ? float_above(hi - lo) : INFINITY);
     }
   }
 };
@@ -172,10 +200,48 @@ class TriangleRay {
       return candidates_among(b, lanes, t_min, t_max, entry, errors(b.magnitude, b.longest_edge));
     }
 
+    /// The window [t_min, t_max] and the bounds on a lane's raw vertex depths that it implies with the
+    /// depth error of `errors` (see the comment at the top): made once per window, not per block.
+    struct Window {
+      float t_min;
+      float depth_low, depth_high;
+    };
+    static Window window(float t_min, float t_max, const Errors& errors) {
+      constexpr float u = 0x1p-24f;
+      const float before = t_min - errors.depth;
+      return {t_min, before * (before >= 0 ? 1 - 8 * u : 1 + 8 * u), (t_max + errors.depth) * (1 + 8 * u)};
+    }
+
+    /// A window kept for a walk whose t_max only drops on hits: remade when t_max changes.
+    class WindowOnChange {
+     public:
+      WindowOnChange(float t_min, double t_max, const Errors& errors)
+          : errors_(errors), t_max_(t_max), window_(window(t_min, float_above(t_max), errors)) {}
+      const Window& operator()(double t_max) {
+        if (t_max != t_max_) {
+          t_max_ = t_max;
+          window_ = window(window_.t_min, float_above(t_max), errors_);
+        }
+        return window_;
+      }
+
+     private:
+      Errors errors_;
+      double t_max_;
+      Window window_;
+    };
+
     /// candidates_among with error terms computed by errors() for scales at least the block's own (once per
     /// ray, for all blocks of an owner: TriangleScales).
     SNELL_LANES_INLINE unsigned candidates_among(const TriangleBlock& b, unsigned lanes, float t_min,
                                                  float t_max, float (&entry)[TriangleBlock::kSize],
+                                                 const Errors& errors) const {
+      return candidates_among(b, lanes, window(t_min, t_max, errors), entry, errors);
+    }
+
+    /// candidates_among over a window made by window() with the same error terms.
+    SNELL_LANES_INLINE unsigned candidates_among(const TriangleBlock& b, unsigned lanes, const Window& w,
+                                                 float (&entry)[TriangleBlock::kSize],
                                                  const Errors& errors) const {
       if (!usable_) {
         for (float& e : entry) e = -INFINITY;
@@ -184,8 +250,15 @@ class TriangleRay {
       using math::lanes::load;
       using math::lanes::splat;
       constexpr float u = 0x1p-24f;
-      const float shear_error = errors.shear, edge_constant = errors.edge_constant,
-                  depth_error = errors.depth;
+      const float shear_error = errors.shear, depth_error = errors.depth;
+      // S, E and the edge-on threshold for the whole block (see the comment at the top); S slightly
+      // enlarged, for the roundings of these few scalar operations.
+      const float s = (12 * (1 + 0x1p-20f)) * (b.extent + shear_error);
+      const float bound_scalar = s * (shear_error + u * s) + errors.edge_constant;
+      F bound, edge_on_threshold;
+      splat(bound, bound_scalar);
+      splat(edge_on_threshold, s * s * 0x1p-20f + 3 * bound_scalar);
+      const float t_min = w.t_min;
       unsigned mask = 0;
       for (int first = 0; first < TriangleBlock::kSize; first += L) {
         F x[3], y[3], z[3];
@@ -203,28 +276,30 @@ class TriangleRay {
         const F e_u = x[2] * y[1] - y[2] * x[1];
         const F e_v = x[0] * y[2] - y[0] * x[2];
         const F e_w = x[1] * y[0] - y[1] * x[0];
-        const F s = (F)((M)x[0] & INT32_MAX) + (F)((M)y[0] & INT32_MAX) + (F)((M)x[1] & INT32_MAX) +
-                    (F)((M)y[1] & INT32_MAX) + (F)((M)x[2] & INT32_MAX) + (F)((M)y[2] & INT32_MAX);
-        const F bound = s * (shear_error + u * s) + edge_constant;
         // Some function clearly negative and some clearly positive: the exact ones cannot share a sign
         // (the least below -bound and the greatest above it: four minps / maxps instead of six compares
-        // and four ors).
-        const F least_uv = e_u < e_v ? e_u : e_v, greatest_uv = e_u < e_v ? e_v : e_u;
+        // and four ors; each minimum and maximum with a comparison of its own, as GCC turned one shared
+        // comparison into a compare and two blends).
+        const F least_uv = e_u < e_v ? e_u : e_v, greatest_uv = e_v < e_u ? e_u : e_v;
         const F least = e_w < least_uv ? e_w : least_uv, greatest = e_w < greatest_uv ? greatest_uv : e_w;
         const M negative = least < -bound;
         const M positive = greatest > bound;
         const F det = e_u + e_v + e_w;
-        const M edge_on = (F)((M)det & INT32_MAX) <= s * s * 0x1p-20f + 3 * bound;
-        const F near = z[0] < z[1] ? z[0] : z[1], far = z[0] < z[1] ? z[1] : z[0];
-        F lowest = z[2] < near ? z[2] : near, highest = z[2] < far ? far : z[2];
-        lowest -= (F)((M)lowest & INT32_MAX) * (2 * u) + depth_error;
-        highest += (F)((M)highest & INT32_MAX) * (2 * u) + depth_error;
-        const M beyond = (lowest > t_max) | (highest < t_min);
-        const M dropped = ((negative & positive) | beyond) & ~edge_on;
-        // Edge-on lanes may hit anywhere along the window.
-        const F low = (F)(((M)lowest & ~edge_on) | ((M)(t_min - F{}) & edge_on));
-        math::lanes::store(entry + first, low);
-        mask |= (~math::lanes::bits(dropped) & ((1u << L) - 1)) << first;
+        const M edge_on = (F)((M)det & INT32_MAX) <= edge_on_threshold;
+        const F near = z[0] < z[1] ? z[0] : z[1], far = z[1] < z[0] ? z[0] : z[1];
+        F lowest = z[2] < near ? z[2] : near;
+        const F highest = z[2] < far ? far : z[2];
+        const M beyond = (lowest > w.depth_high) | (highest < w.depth_low);
+        const M dropped = (negative & positive) | (beyond & ~edge_on);
+        const unsigned kept = ~math::lanes::bits(dropped) & ((1u << L) - 1);
+        // Entries only where a lane is kept (most blocks keep none): the nearest depth widened by its
+        // error, and edge-on lanes, which may hit anywhere along the window, at its start.
+        if (kept != 0) {
+          lowest -= (F)((M)lowest & INT32_MAX) * (2 * u) + depth_error;
+          const F low = (F)(((M)lowest & ~edge_on) | ((M)(t_min - F{}) & edge_on));
+          math::lanes::store(entry + first, low);
+        }
+        mask |= kept << first;
       }
       return mask & lanes;
     }

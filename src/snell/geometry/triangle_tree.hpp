@@ -34,11 +34,12 @@ class TriangleTree {
     FloatAboveOnChange high(t_max);
     const bool uniform_errors = scales_.finite();
     const auto errors = triangle_ray.errors(scales_.magnitude, scales_.longest_edge);
+    typename TriangleRay::Lanes<L>::WindowOnChange window(low, t_max, errors);
     const auto leaf = [&](uint32_t block, uint32_t, double& t) __attribute__((always_inline)) {
       const TriangleBlock& b = blocks_[block];
       float entry[TriangleBlock::kSize];
       const unsigned lanes = (1u << b.count) - 1;
-      for (unsigned m = uniform_errors ? triangle_ray.candidates_among(b, lanes, low, high(t), entry, errors)
+      for (unsigned m = uniform_errors ? triangle_ray.candidates_among(b, lanes, window(t), entry, errors)
                                        : triangle_ray.candidates_among(b, lanes, low, high(t), entry);
            m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
