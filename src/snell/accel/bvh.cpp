@@ -66,7 +66,10 @@ Bvh::Bvh(const scene::Scene& scene) {
       for (scene::RayKind kind : {scene::RayKind::camera, scene::RayKind::reflection,
                                   scene::RayKind::refraction, scene::RayKind::shadow})
         if (t.object->visible_to(kind)) block.tag |= 1u << (8 * static_cast<int>(kind) + lane);
+      // Without a transform the double test runs on these vertices: a clear hit of the filter stands.
+      if (!t.transform) block.decisive |= static_cast<uint8_t>(1u << lane);
       triangles_.push_back(t);
+      triangle_objects_.push_back(t.object);
     }
     return static_cast<uint32_t>(blocks_.size() - 1) | kTriangleLeaf;
   });
@@ -80,7 +83,7 @@ Bvh::Bvh(const scene::Scene& scene) {
 }
 
 template <int L, bool kAnyHit>
-SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
+SNELL_LANES_INLINE void Bvh::walk(NearestHit& nearest) const {
   const math::Ray& ray = nearest.ray();
   const geometry::TriangleRay::Lanes<L> triangle_ray{geometry::TriangleRay(ray)};
   const float t_min = geometry::float_below(nearest.t_min());
@@ -102,15 +105,37 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
         for (uint32_t m = visible; m != 0; m &= m - 1)
           count_object_test(*triangles_[block.first + std::countr_zero(m)].object);
       float entry[geometry::TriangleBlock::kSize];
-      uint32_t m = uniform_errors
-                       ? triangle_ray.candidates_among(block, visible, window(t_max), entry, errors)
-                       : triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry);
+      unsigned clear = 0;
+      uint32_t m;
+      if (!kAnyHit) {
+        m = uniform_errors ? triangle_ray.candidates_among(block, visible, window(t_max), entry, errors)
+                           : triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry);
+      } else if (uniform_errors) {
+        m = triangle_ray.candidates_among(block, visible, window(t_max), entry, errors, clear);
+      } else {
+        const auto own = triangle_ray.errors(block.magnitude, block.longest_edge);
+        m = triangle_ray.candidates_among(block, visible, triangle_ray.window(t_min, float_t_max(t_max), own),
+                                          entry, own, clear);
+      }
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
-        if (entry[lane] > nearest.t_max()) continue;
-        if (nearest.test_triangle(triangles_[block.first + lane])) {
-          hit = true;
-          if (kAnyHit) break;
+        if constexpr (kAnyHit) {
+          // A clear hit ends the walk on its object alone, from the compact array: the record's read (a
+          // miss in a large scene) and the double test are for the lanes the filter cannot settle. Lanes
+          // in order, as the double test would take them.
+          if (clear >> lane & 1u) {
+            nearest.blocked_by(*triangle_objects_[block.first + lane]);
+            hit = true;
+            break;
+          }
+          if (entry[lane] > nearest.t_max()) continue;
+          if (nearest.test_triangle(triangles_[block.first + lane])) {
+            hit = true;
+            break;
+          }
+        } else {
+          if (entry[lane] > nearest.t_max()) continue;
+          nearest.test_triangle(triangles_[block.first + lane]);
         }
       }
     } else {
@@ -130,14 +155,13 @@ SNELL_LANES_INLINE bool Bvh::walk(NearestHit& nearest) const {
   };
   // An occlusion query takes any hit: its walk needs no order.
   tally.add(tree_.walk<L, !kAnyHit>(ray, nearest.t_min(), nearest.t_max(), leaf, prefetch));
-  return nearest.object() != nullptr;
 }
 
 bool Bvh::intersect(const math::Ray& ray, double t_min, double t_max, scene::RayKind kind,
                     scene::SurfaceHit& hit) const {
   NearestHit nearest(ray, t_min, t_max, kind, hit);
   for (const scene::Object* o : unbounded_) nearest.test_general(*o);
-  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) { return walk<L, false>(nearest); });
+  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) { walk<L, false>(nearest); });
   return nearest.finish();
 }
 
@@ -147,7 +171,7 @@ const scene::Object* Bvh::occluder(const math::Ray& ray, double t_min, double t_
   NearestHit nearest(ray, t_min, t_max, kind, scratch);
   for (const scene::Object* o : unbounded_)
     if (nearest.test_blocking(*o)) return o;
-  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) { return walk<L, true>(nearest); });
+  math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) { walk<L, true>(nearest); });
   return nearest.object();
 }
 

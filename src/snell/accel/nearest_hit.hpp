@@ -64,6 +64,12 @@ class NearestHit {
     found_ = true;
     return true;
   }
+  /// For an occlusion query: a plain triangle the ray surely crosses within the window (the filter's clear
+  /// hit) stops it; object() then names it.
+  void blocked_by(const scene::Object& object) {
+    triangle_ = &object;
+    found_ = true;
+  }
   /// Tests a plain triangle visible to the ray's kind, counted already.
   bool test_triangle(const PlainTriangle& triangle) {
     geometry::TriangleHit crossing;

@@ -144,10 +144,9 @@ bool Mesh::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) 
 bool Mesh::crosses(const Ray& ray, double t_min, double t_max) const {
   bool crossed = false;
   math::lanes::with_lanes([&]<int L>() __attribute__((always_inline)) {
-    tree().walk<L, false>(ray, t_min, t_max, [&](uint32_t face, double&) {
+    crossed = tree().walk<L, false, true>(ray, t_min, t_max, [&](uint32_t face, double&) {
       TriangleHit th;
-      crossed = crossing(static_cast<int>(face), ray, t_min, t_max, th);
-      return crossed;
+      return crossing(static_cast<int>(face), ray, t_min, t_max, th);
     });
   });
   return crossed;

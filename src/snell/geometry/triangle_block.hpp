@@ -1,7 +1,9 @@
 #pragma once
 // Up to eight triangles in single precision, laid out for SIMD tests (one lane per triangle), and the
 // conservative test of a ray against all of them: a filter in front of the double-precision test
-// (triangle_kernel.hpp), which alone decides hits, so that results stay those of the double test.
+// (triangle_kernel.hpp), which decides hits, so that results stay those of the double test. The one
+// exception is a clear hit (see candidates_among with `clear`), which the same error bounds, read the other
+// way, show the double test would take: an occlusion query may stop on it untested.
 //
 // The filter is the watertight test of Woop, Benthin and Wald ("Watertight ray/triangle intersection",
 // JCGT 2(1), 2013): vertices relative to the ray origin are sheared so that the ray runs along +z, and the
@@ -73,6 +75,9 @@ struct alignas(64) TriangleBlock {
   uint32_t tag = 0;
   /// The owner's number of the triangle in lane 0.
   uint32_t first = 0;
+  /// Lanes whose double test runs on the very vertices stored here (set by the owner: no transform
+  /// between them), so that the filter's clear hits may stand for it (TriangleRay::Lanes, `clear`).
+  uint8_t decisive = 0;
   /// Vertex k's coordinate a of triangle l is v[k][a][l], rounded to the nearest float.
   alignas(32) float v[3][3][kSize] = {};
 
@@ -202,14 +207,21 @@ class TriangleRay {
 
     /// The window [t_min, t_max] and the bounds on a lane's raw vertex depths that it implies with the
     /// depth error of `errors` (see the comment at the top): made once per window, not per block.
+    /// clear_low and clear_high bound a lane's raw vertex depths for a clear hit: twice the depth error
+    /// inside the window, and 16 u of relative slack for the widening by 2 u |depth| and the roundings
+    /// of these sums (t_max here rounded up: the slack and the second depth error cover that ulp).
     struct Window {
       float t_min;
       float depth_low, depth_high;
+      float clear_low, clear_high;
     };
     static Window window(float t_min, float t_max, const Errors& errors) {
       constexpr float u = 0x1p-24f;
       const float before = t_min - errors.depth;
-      return {t_min, before * (before >= 0 ? 1 - 8 * u : 1 + 8 * u), (t_max + errors.depth) * (1 + 8 * u)};
+      const float clear_low = t_min + 2 * errors.depth, clear_high = t_max - 2 * errors.depth;
+      return {t_min, before * (before >= 0 ? 1 - 8 * u : 1 + 8 * u), (t_max + errors.depth) * (1 + 8 * u),
+              clear_low * (clear_low >= 0 ? 1 + 16 * u : 1 - 16 * u),
+              clear_high > 0 ? clear_high * (1 - 16 * u) : -INFINITY};
     }
 
     /// A window kept for a walk whose t_max only drops on hits: remade when t_max changes.
@@ -243,6 +255,30 @@ class TriangleRay {
     SNELL_LANES_INLINE unsigned candidates_among(const TriangleBlock& b, unsigned lanes, const Window& w,
                                                  float (&entry)[TriangleBlock::kSize],
                                                  const Errors& errors) const {
+      unsigned unused;
+      return filter<false>(b, lanes, w, entry, errors, unused);
+    }
+
+    /// The same, and `clear` the kept lanes of b.decisive that the double test is sure to hit within the
+    /// window: all three edge functions beyond the bound on one side (the double test's numerators of b1,
+    /// b2 and 1 - b1 - b2 then share their sign, the argument of the comment at the top read the other
+    /// way), the ray not near edge-on, and all vertex depths inside the window by twice the depth error
+    /// (the double test's distance lies within the exact depths by less than one). An occlusion query
+    /// takes such a lane's object without the double test and its read of the triangle's record.
+    SNELL_LANES_INLINE unsigned candidates_among(const TriangleBlock& b, unsigned lanes, const Window& w,
+                                                 float (&entry)[TriangleBlock::kSize], const Errors& errors,
+                                                 unsigned& clear) const {
+      clear = 0;
+      const unsigned kept = filter<true>(b, lanes, w, entry, errors, clear);
+      clear &= kept & b.decisive;
+      return kept;
+    }
+
+   private:
+    template <bool kClear>
+    SNELL_LANES_INLINE unsigned filter(const TriangleBlock& b, unsigned lanes, const Window& w,
+                                       float (&entry)[TriangleBlock::kSize], const Errors& errors,
+                                       unsigned& clear) const {
       if (!usable_) {
         for (float& e : entry) e = -INFINITY;
         return lanes;
@@ -295,6 +331,14 @@ class TriangleRay {
         // Entries only where a lane is kept (most blocks keep none): the nearest depth widened by its
         // error, and edge-on lanes, which may hit anywhere along the window, at its start.
         if (kept != 0) {
+          if constexpr (kClear) {
+            F clear_low, clear_high;
+            splat(clear_low, w.clear_low);
+            splat(clear_high, w.clear_high);
+            const M inside = (least > bound) | (greatest < -bound);
+            const M sure = inside & ~edge_on & (lowest > clear_low) & (highest < clear_high);
+            clear |= (math::lanes::bits(sure) & ((1u << L) - 1)) << first;
+          }
           lowest -= (F)((M)lowest & INT32_MAX) * (2 * u) + depth_error;
           const F low = (F)(((M)lowest & ~edge_on) | ((M)(t_min - F{}) & edge_on));
           math::lanes::store(entry + first, low);
@@ -304,7 +348,6 @@ class TriangleRay {
       return mask & lanes;
     }
 
-   private:
     /// The byte offsets within a vertex's rows of the ray's sheared x, y and its z axis (added to the
     /// vertex's address: a row index cost a sign extension and a shift per load), and the origin in those
     /// rows.

@@ -35,6 +35,8 @@ TriangleTree::TriangleTree(std::span<const math::Vec3> vertices, std::span<const
       const uint32_t f = bvh_.order()[i];
       block.add(vertices[faces[f][0]], vertices[faces[f][1]], vertices[faces[f][2]]);
     }
+    // The owner's double test runs on these very vertices: a clear hit of the filter may stand for it.
+    block.decisive = static_cast<uint8_t>((1u << block.count) - 1);
     return static_cast<uint32_t>(blocks_.size() - 1);
   });
   blocks_.shrink_to_fit();

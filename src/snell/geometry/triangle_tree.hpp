@@ -24,11 +24,14 @@ class TriangleTree {
   size_t node_count() const { return bvh_.node_count(); }
 
   /// Calls visit(triangle, t_max) for each triangle that may be hit within [t_min, t_max]; `visit` may
-  /// lower t_max, and a `visit` that returns bool ends the walk by returning true. With kOrdered false the
-  /// leaves come in no particular order (for queries that take any hit: WideBvh::walk). L lanes per
-  /// instruction (math/float_lanes.hpp).
-  template <int L, bool kOrdered = true, class Visit>
-  SNELL_LANES_INLINE void walk(const math::Ray& ray, double t_min, double t_max, Visit&& visit) const {
+  /// lower t_max, and a `visit` that returns bool ends the walk by returning true (walk then returns true).
+  /// With kOrdered false the leaves come in no particular order (for queries that take any hit:
+  /// WideBvh::walk). With kClearEnds (a query that only asks whether the ray crosses a triangle) a lane the
+  /// filter calls a clear hit ends the walk unvisited, sparing the owner's test and its reads of the face and
+  /// its vertices. L lanes per instruction (math/float_lanes.hpp).
+  template <int L, bool kOrdered = true, bool kClearEnds = false, class Visit>
+  SNELL_LANES_INLINE bool walk(const math::Ray& ray, double t_min, double t_max, Visit&& visit) const {
+    bool ended = false;
     const TriangleRay::Lanes<L> triangle_ray{TriangleRay(ray)};
     const float low = float_below(t_min);
     FloatAboveOnChange high(t_max);
@@ -39,14 +42,24 @@ class TriangleTree {
       const TriangleBlock& b = blocks_[block];
       float entry[TriangleBlock::kSize];
       const unsigned lanes = (1u << b.count) - 1;
-      for (unsigned m = uniform_errors ? triangle_ray.candidates_among(b, lanes, window(t), entry, errors)
-                                       : triangle_ray.candidates_among(b, lanes, low, high(t), entry);
-           m != 0; m &= m - 1) {
+      unsigned m, clear = 0;
+      if constexpr (kClearEnds) {
+        const auto own = triangle_ray.errors(b.magnitude, b.longest_edge);
+        m = uniform_errors ? triangle_ray.candidates_among(b, lanes, window(t), entry, errors, clear)
+                           : triangle_ray.candidates_among(b, lanes, triangle_ray.window(low, high(t), own),
+                                                           entry, own, clear);
+      } else {
+        m = uniform_errors ? triangle_ray.candidates_among(b, lanes, window(t), entry, errors)
+                           : triangle_ray.candidates_among(b, lanes, low, high(t), entry);
+      }
+      for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
+        // Lanes in order, so that a clear lane ends the walk only after the lanes before it were tested.
+        if (kClearEnds && (clear >> lane & 1u)) return ended = true;
         if (entry[lane] > t) continue;
         const uint32_t face = bvh_.order()[b.first + lane];
         if constexpr (std::is_same_v<decltype(visit(face, t)), bool>) {
-          if (visit(face, t)) return true;
+          if (visit(face, t)) return ended = true;
         } else {
           visit(face, t);
         }
@@ -57,6 +70,7 @@ class TriangleTree {
       prefetch_lines(&blocks_[block], sizeof(TriangleBlock));
     };
     bvh_.walk<L, kOrdered>(ray, t_min, t_max, leaf, prefetch);
+    return ended;
   }
 
  private:
