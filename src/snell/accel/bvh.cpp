@@ -107,15 +107,13 @@ SNELL_LANES_INLINE void Bvh::walk(NearestHit& nearest) const {
       float entry[geometry::TriangleBlock::kSize];
       unsigned clear = 0;
       uint32_t m;
-      if (!kAnyHit) {
+      if constexpr (kAnyHit) {
+        m = uniform_errors
+                ? triangle_ray.candidates_among(block, visible, window(t_max), entry, errors, clear)
+                : triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry, clear);
+      } else {
         m = uniform_errors ? triangle_ray.candidates_among(block, visible, window(t_max), entry, errors)
                            : triangle_ray.candidates_among(block, visible, t_min, float_t_max(t_max), entry);
-      } else if (uniform_errors) {
-        m = triangle_ray.candidates_among(block, visible, window(t_max), entry, errors, clear);
-      } else {
-        const auto own = triangle_ray.errors(block.magnitude, block.longest_edge);
-        m = triangle_ray.candidates_among(block, visible, triangle_ray.window(t_min, float_t_max(t_max), own),
-                                          entry, own, clear);
       }
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);

@@ -274,6 +274,14 @@ class TriangleRay {
       return kept;
     }
 
+    /// The same with the block's own error terms (as the candidates_among of t_min, t_max above).
+    SNELL_LANES_INLINE unsigned candidates_among(const TriangleBlock& b, unsigned lanes, float t_min,
+                                                 float t_max, float (&entry)[TriangleBlock::kSize],
+                                                 unsigned& clear) const {
+      const Errors own = errors(b.magnitude, b.longest_edge);
+      return candidates_among(b, lanes, window(t_min, t_max, own), entry, own, clear);
+    }
+
    private:
     template <bool kClear>
     SNELL_LANES_INLINE unsigned filter(const TriangleBlock& b, unsigned lanes, const Window& w,

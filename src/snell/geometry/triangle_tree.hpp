@@ -44,10 +44,8 @@ class TriangleTree {
       const unsigned lanes = (1u << b.count) - 1;
       unsigned m, clear = 0;
       if constexpr (kClearEnds) {
-        const auto own = triangle_ray.errors(b.magnitude, b.longest_edge);
         m = uniform_errors ? triangle_ray.candidates_among(b, lanes, window(t), entry, errors, clear)
-                           : triangle_ray.candidates_among(b, lanes, triangle_ray.window(low, high(t), own),
-                                                           entry, own, clear);
+                           : triangle_ray.candidates_among(b, lanes, low, high(t), entry, clear);
       } else {
         m = uniform_errors ? triangle_ray.candidates_among(b, lanes, window(t), entry, errors)
                            : triangle_ray.candidates_among(b, lanes, low, high(t), entry);
