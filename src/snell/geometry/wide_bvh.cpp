@@ -4,7 +4,11 @@
 #include <cmath>
 #include <utility>
 
+#include "snell/geometry/collapse_plan.hpp"
+
 namespace snell::geometry {
+
+static_assert(CollapsePlan::kMaxWidth >= WideBvh::kWidth, "a plan for nodes as wide as the tree's");
 
 namespace {
 
@@ -66,7 +70,15 @@ class WideBvhBuilder {
     tree_.bounds_ = binary_[0].box;
     tree_.root_box_ = FloatBox(binary_[0].box);
     tree_.root_count_ = binary_[0].count;
-    tree_.root_index_ = tree_.root_count_ > 0 ? binary_[0].offset : collapse(0);
+    if (tree_.root_count_ == 0) {
+      std::vector<CollapsePlan::Binary> shape;
+      shape.reserve(binary_.size());
+      for (const BinaryNode& b : binary_) shape.push_back({b.box.surface_area(), b.count > 0, b.offset});
+      const CollapsePlan plan(shape, WideBvh::kWidth);
+      tree_.root_index_ = collapse(0, plan);
+    } else {
+      tree_.root_index_ = binary_[0].offset;
+    }
     tree_.nodes_.shrink_to_fit();
     tree_.order_.shrink_to_fit();
   }
@@ -319,26 +331,12 @@ class WideBvhBuilder {
     for (const Reference& r : refs) tree_.order_.push_back(r.primitive);
   }
 
-  /// Appends the wide node for binary interior node `b` (and, first, its subtrees); returns its index.
-  uint32_t collapse(uint32_t b) {
+  /// Appends the wide node for binary interior node `b` (and, first, its subtrees), its children as
+  /// `plan` has them; returns its index.
+  uint32_t collapse(uint32_t b, const CollapsePlan& plan) {
     std::vector<WideBvh::Node>& wide = tree_.nodes_;
-    std::array<uint32_t, WideBvh::kWidth> members{binary_[b].offset, binary_[b].offset + 1};
-    int n = 2;
-    while (n < WideBvh::kWidth) {
-      int open = -1;
-      double largest = -1;
-      for (int k = 0; k < n; ++k) {
-        const BinaryNode& m = binary_[members[k]];
-        if (m.count == 0 && m.box.surface_area() > largest) {
-          largest = m.box.surface_area();
-          open = k;
-        }
-      }
-      if (open < 0) break;
-      const uint32_t opened = members[open];
-      members[open] = binary_[opened].offset;
-      members[n++] = binary_[opened].offset + 1;
-    }
+    std::array<uint32_t, CollapsePlan::kMaxWidth> members{};
+    const int n = plan.members(b, members);
     const auto index = static_cast<uint32_t>(wide.size());
     wide.emplace_back();
     WideBvh::Node node{};
@@ -352,7 +350,7 @@ class WideBvhBuilder {
       node.count[k] = 0;
       if (k >= n) continue;
       const BinaryNode& m = binary_[members[k]];
-      node.child[k] = m.count > 0 ? m.offset : collapse(members[k]);
+      node.child[k] = m.count > 0 ? m.offset : collapse(members[k], plan);
       node.count[k] = m.count;
     }
     wide[index] = node;  // after the recursion, which may have moved `wide`

@@ -3,9 +3,10 @@
 // (accel/bvh.hpp) and the mesh shape: binary, built top-down with the surface area heuristic over 16
 // centroid bins (Wald, "On fast construction of SAH-based bounding volume hierarchies", 2007) and, where
 // children would overlap, spatial splits that put a primitive in both (Stich, Friedrich and Dietrich,
-// "Spatial splits in bounding volume hierarchies", 2009), collapsed to eight children per node, walked
-// nearest child first with a fixed stack. Leaves are ranges of the leaf order, in which a primitive may
-// appear more than once; their owner keeps what they hold (objects, packed triangles) and may relabel them.
+// "Spatial splits in bounding volume hierarchies", 2009), collapsed to eight children per node by the
+// collapse of least summed node area (collapse_plan.hpp), walked nearest child first with a fixed stack.
+// Leaves are ranges of the leaf order, in which a primitive may appear more than once; their owner keeps what
+// they hold (objects, packed triangles) and may relabel them.
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -32,12 +33,12 @@ SNELL_LANES_INLINE void prefetch_lines(const void* p, size_t bytes) {
 
 class WideBvh {
  public:
-  /// kWidth children per node: the binary SAH tree collapsed (each node opens its largest interior
-  /// children until it has kWidth; Wald, Benthin and Boulos, "Getting rid of packets", 2008, with the
-  /// eight-wide nodes of Ernst and Greiner's multi BVH, 2008), so a walk makes fewer dependent node
-  /// fetches: eight measured 10-20% faster than four on incoherent rays (docs/benchmark.md), as a node's
-  /// four adjacent cache lines arrive together. Child boxes are float, rounded outward, and tested in single
-  /// precision, conservatively (float_slabs.hpp). Unused slots hold FloatBox::nothing(), which no ray enters.
+  /// kWidth children per node: the binary SAH tree collapsed (collapse_plan.hpp; wide nodes as in Wald,
+  /// Benthin and Boulos, "Getting rid of packets", 2008, with the eight-wide nodes of Ernst and Greiner's
+  /// multi BVH, 2008), so a walk makes fewer dependent node fetches: eight measured 10-20% faster than four
+  /// on incoherent rays (docs/benchmark.md), as a node's four adjacent cache lines arrive together. Child
+  /// boxes are float, rounded outward, and tested in single precision, conservatively (float_slabs.hpp).
+  /// Unused slots hold FloatBox::nothing(), which no ray enters.
   static constexpr int kWidth = 8;
   struct alignas(64) Node {
     /// Child k's box: rows 0-2 its lo x, y, z, rows 3-5 its hi (so a ray picks its near and far rows once).
