@@ -14,21 +14,22 @@ CollapsePlan::CollapsePlan(std::span<const Binary> tree, int width)
     const Node& first = plans_[b.first_child];
     const Node& second = plans_[b.first_child + 1];
     Node& plan = plans_[i];
-    std::array<double, kMaxWidth + 1> shared{};
+    std::array<float, kMaxWidth + 1> shared{};
     for (int slots = 2; slots <= width; ++slots) {
       shared[slots] = INFINITY;
       for (int k = 1; k < slots; ++k) {
-        const double c = first.cost[k] + second.cost[slots - k];
+        const float c = first.cost[k] + second.cost[slots - k];
         if (c < shared[slots]) {
           shared[slots] = c;
           plan.split[slots] = static_cast<uint8_t>(k);
         }
       }
     }
-    plan.cost[1] = b.area + shared[width];
+    plan.cost[1] = static_cast<float>(b.area) + shared[width];
     for (int slots = 2; slots <= width; ++slots) {
-      plan.fewer[slots] = !(shared[slots] < plan.cost[slots - 1]);
-      plan.cost[slots] = plan.fewer[slots] ? plan.cost[slots - 1] : shared[slots];
+      const bool fewer = !(shared[slots] < plan.cost[slots - 1]);
+      plan.fewer |= static_cast<uint16_t>(fewer << slots);
+      plan.cost[slots] = fewer ? plan.cost[slots - 1] : shared[slots];
     }
   }
 }
@@ -43,7 +44,7 @@ int CollapsePlan::members(uint32_t b, std::array<uint32_t, kMaxWidth>& members) 
 
 void CollapsePlan::gather(uint32_t b, int slots, std::array<uint32_t, kMaxWidth>& members, int& n) const {
   const Node& plan = plans_[b];
-  while (!tree_[b].leaf && slots > 1 && plan.fewer[slots]) --slots;
+  while (!tree_[b].leaf && slots > 1 && (plan.fewer >> slots & 1u) != 0) --slots;
   if (tree_[b].leaf || slots == 1) {
     members[n++] = b;
     return;
