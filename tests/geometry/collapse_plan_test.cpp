@@ -123,4 +123,21 @@ TEST(CollapsePlanTest, BinaryWidthKeepsEveryNode) {
   EXPECT_NEAR(plan.cost(0), all, 1e-5 * all);
 }
 
+TEST(CollapsePlanTest, AreasThatDoNotCompareStillGiveValidMembers) {
+  // Boxes of NaN or infinite area (degenerate input) must not leave a node without a way to share its
+  // slots: every node still gets 2 .. width members that cover its leaves once.
+  for (double bad : {std::nan(""), static_cast<double>(INFINITY)}) {
+    RandomTree tree(30, 11);
+    for (size_t i = 0; i < tree.nodes.size(); i += 2) tree.nodes[i].area = bad;
+    const CollapsePlan plan(tree.nodes, 8);
+    std::vector<int> seen(tree.nodes.size(), 0);
+    realised(tree.nodes, plan, 0, 8, seen);
+    for (size_t i = 0; i < tree.nodes.size(); ++i) {
+      if (tree.nodes[i].leaf) {
+        EXPECT_EQ(seen[i], 1) << "leaf " << i;
+      }
+    }
+  }
+}
+
 }  // namespace

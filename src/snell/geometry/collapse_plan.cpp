@@ -16,7 +16,9 @@ CollapsePlan::CollapsePlan(std::span<const Binary> tree, int width)
     Node& plan = plans_[i];
     std::array<float, kMaxWidth + 1> shared{};
     for (int slots = 2; slots <= width; ++slots) {
+      // A valid share even where no sum compares (NaN or infinite areas of degenerate boxes).
       shared[slots] = INFINITY;
+      plan.split[slots] = 1;
       for (int k = 1; k < slots; ++k) {
         const float c = first.cost[k] + second.cost[slots - k];
         if (c < shared[slots]) {
