@@ -117,23 +117,18 @@ SNELL_LANES_INLINE void Bvh::walk(NearestHit& nearest) const {
       }
       for (; m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
-        if constexpr (kAnyHit) {
-          // A clear hit ends the walk on its object alone, from the compact array: the record's read (a
-          // miss in a large scene) and the double test are for the lanes the filter cannot settle. Lanes
-          // in order, as the double test would take them.
-          if (clear >> lane & 1u) {
-            nearest.blocked_by(*triangle_objects_[block.first + lane]);
-            hit = true;
-            break;
-          }
-          if (entry[lane] > nearest.t_max()) continue;
-          if (nearest.test_triangle(triangles_[block.first + lane])) {
-            hit = true;
-            break;
-          }
-        } else {
-          if (entry[lane] > nearest.t_max()) continue;
-          nearest.test_triangle(triangles_[block.first + lane]);
+        // A clear hit ends the walk on its object alone, from the compact array: the record's read (a miss
+        // in a large scene) and the double test are for the lanes the filter cannot settle. Lanes in order,
+        // as the double test would take them.
+        if (kAnyHit && (clear >> lane & 1u)) {
+          nearest.blocked_by(*triangle_objects_[block.first + lane]);
+          hit = true;
+          break;
+        }
+        if (entry[lane] > nearest.t_max()) continue;
+        if (nearest.test_triangle(triangles_[block.first + lane])) {
+          hit = true;
+          if (kAnyHit) break;
         }
       }
     } else {

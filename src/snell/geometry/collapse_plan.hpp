@@ -28,7 +28,8 @@ class CollapsePlan {
     uint32_t first_child = 0;
   };
 
-  /// Plans the collapse of `tree` (node 0 the root) to nodes of `width` children (2 .. kMaxWidth).
+  /// Plans the collapse of `tree` (node 0 the root) to nodes of `width` children (2 .. kMaxWidth). The plan
+  /// keeps a view of `tree`, which must outlive it: members() reads it.
   CollapsePlan(std::span<const Binary> tree, int width);
 
   /// Puts in `members` the binary nodes that become the children of interior node b's wide node, in the
