@@ -78,6 +78,22 @@ TEST(PhotonsTest, PhotonsCoverTheSolidAngleOfTheTarget) {
   EXPECT_NEAR(static_cast<double>(shot.shot) / expected, 1.0, 0.01);
 }
 
+TEST(PhotonsTest, ShadowlessLightsShootNoPhotons) {
+  // A shadowless light is POV-Ray's fill light, which its photon pass skips (photonstrategytask.cpp):
+  // adding one beside a light must leave the shot photons as they are.
+  const std::string rest = R"(
+    global_settings { photons { spacing 0.05 autostop 1 } }
+    light_source { <0, 8, 0> color rgb 1 photons { refraction on } }
+    plane { y, -2 pigment { rgb 1 } }
+    sphere { 0, 1 )" + std::string(kGlass) + " photons { target } }";
+  const ShootingResult alone = shoot(parse(rest));
+  const ShootingResult with_fill =
+      shoot(parse(rest + " light_source { <5, 8, 0> color rgb 1 shadowless photons { refraction on } }"));
+  EXPECT_GT(alone.shot, 100u);
+  EXPECT_EQ(with_fill.shot, alone.shot);
+  EXPECT_EQ(with_fill.photons.size(), alone.photons.size());
+}
+
 TEST(PhotonsTest, GlassSphereFocusesNearTheParaxialFocus) {
   // A narrow beam (cylinder light of radius 0.1) along the axis of a glass sphere of radius 1, n = 1.5: the
   // rays cross the axis at the paraxial focus f = n R / (2 (n - 1)) = 1.5 below the centre. Each stored
