@@ -85,13 +85,35 @@ TEST(PhotonsTest, ShadowlessLightsShootNoPhotons) {
     global_settings { photons { spacing 0.05 autostop 1 } }
     light_source { <0, 8, 0> color rgb 1 photons { refraction on } }
     plane { y, -2 pigment { rgb 1 } }
-    sphere { 0, 1 )" + std::string(kGlass) + " photons { target } }";
+    sphere { 0, 1 )" + std::string(kGlass) +
+                           " photons { target } }";
   const ShootingResult alone = shoot(parse(rest));
   const ShootingResult with_fill =
       shoot(parse(rest + " light_source { <5, 8, 0> color rgb 1 shadowless photons { refraction on } }"));
   EXPECT_GT(alone.shot, 100u);
   EXPECT_EQ(with_fill.shot, alone.shot);
   EXPECT_EQ(with_fill.photons.size(), alone.photons.size());
+}
+
+TEST(PhotonsTest, PhotonsFromAFarLightDoNotMeetTheirMirrorAgain) {
+  // A mirror cylinder lit from 1.4e5 units away: its quadratic's roots lose digits with the square of the
+  // distance, and a hit point left inside the surface sends the reflected photon straight back into it. A
+  // convex mirror cannot light itself, so no photon may be stored on it; the floor gets the rest.
+  const ShootingResult shot = shoot(parse(R"(
+    global_settings { photons { spacing 0.02 autostop 1 } }
+    light_source { <100000, 100000, 0> color rgb 1 photons { reflection on } }
+    plane { y, -1 pigment { rgb 1 } }
+    cylinder { <0, -0.5, 0>, <0, 0.5, 0>, 1 pigment { rgb 1 } finish { reflection 1 }
+               photons { target reflection on } })"));
+  size_t on_mirror = 0, on_floor = 0;
+  for (const Photon& p : shot.photons) {
+    if (std::fabs(std::hypot(p.position.x, p.position.z) - 1) < 1e-3 && std::fabs(p.position.y) < 0.501)
+      ++on_mirror;
+    if (std::fabs(p.position.y + 1) < 1e-6) ++on_floor;
+  }
+  EXPECT_GT(shot.shot, 1000u);
+  EXPECT_GT(on_floor, 100u);
+  EXPECT_EQ(on_mirror, 0u) << "of " << shot.photons.size() << " photons";
 }
 
 TEST(PhotonsTest, GlassSphereFocusesNearTheParaxialFocus) {

@@ -60,6 +60,8 @@ class PhotonPath {
     bool passed;
   };
   void follow(const math::Ray& ray, Leg leg, const InteriorStack& inside, std::vector<Photon>& out);
+  /// A hit far along `ray` intersected again from just before it, where rounding is small.
+  void refine_far_hit(const math::Ray& ray, scene::SurfaceHit& hit) const;
   void store(const math::Vec3& point, const math::Vec3& incoming, const Leg& leg,
              std::vector<Photon>& out) const;
 
