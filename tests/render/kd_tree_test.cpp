@@ -52,6 +52,15 @@ TEST(KdTreeTest, NearestMatchesBruteForce) {
       EXPECT_EQ(got[i].index, expected[i].index) << "query " << q << " rank " << i;
       EXPECT_DOUBLE_EQ(got[i].distance_squared, expected[i].distance_squared);
     }
+    // Unsorted: the same points, and the farthest of them reported.
+    const double farthest = tree.nearest_in_any_order(c, k, radius, reused);
+    std::vector<uint32_t> in_any_order, in_order;
+    for (const Neighbour& n : reused) in_any_order.push_back(n.index);
+    for (const Neighbour& n : expected) in_order.push_back(n.index);
+    std::sort(in_any_order.begin(), in_any_order.end());
+    std::sort(in_order.begin(), in_order.end());
+    EXPECT_EQ(in_any_order, in_order) << "query " << q;
+    EXPECT_EQ(farthest, expected.empty() ? 0.0 : expected.back().distance_squared) << "query " << q;
   }
 }
 

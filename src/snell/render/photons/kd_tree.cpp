@@ -112,14 +112,22 @@ void KdTree::search(size_t lo, size_t hi, const math::Vec3& centre, size_t k, do
   }
 }
 
-void KdTree::nearest(const math::Vec3& centre, size_t k, double max_radius,
-                     std::vector<Neighbour>& found) const {
+double KdTree::nearest_in_any_order(const math::Vec3& centre, size_t k, double max_radius,
+                                    std::vector<Neighbour>& found) const {
   found.clear();
-  if (k == 0 || nodes_.empty()) return;
+  if (k == 0 || nodes_.empty()) return 0;
   double radius_squared = max_radius * max_radius;
   math::Vec3 gap{0, 0, 0};
   search(0, nodes_.size(), centre, k, radius_squared, found, gap, 0);
-  if (found.size() > k) keep_nearest(found, k);
+  if (found.size() > k) return keep_nearest(found, k);
+  double farthest = 0;
+  for (const Neighbour& n : found) farthest = std::max(farthest, n.distance_squared);
+  return farthest;
+}
+
+void KdTree::nearest(const math::Vec3& centre, size_t k, double max_radius,
+                     std::vector<Neighbour>& found) const {
+  nearest_in_any_order(centre, k, max_radius, found);
   std::sort(found.begin(), found.end(), Closer{});
 }
 

@@ -24,6 +24,11 @@ class KdTree {
   std::vector<Neighbour> nearest(const math::Vec3& centre, size_t k, double max_radius) const;
   /// The same into `found` (cleared first), whose capacity the caller keeps from query to query.
   void nearest(const math::Vec3& centre, size_t k, double max_radius, std::vector<Neighbour>& found) const;
+  /// The same points in an order fixed by the tree (the same for the same points), not sorted: the sort
+  /// was a third of a photon gather's cost, and a gather sums them whatever their order. Returns the
+  /// largest squared distance among them (0 when there are none).
+  double nearest_in_any_order(const math::Vec3& centre, size_t k, double max_radius,
+                              std::vector<Neighbour>& found) const;
 
   size_t size() const { return nodes_.size(); }
 

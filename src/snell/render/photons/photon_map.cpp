@@ -79,8 +79,8 @@ void PhotonMap::gather(const Vec3& point, const Vec3& normal, double size, Found
   f.photons.clear();
   // One buffer per thread for the tree's answer: a gather per shading point must not allocate.
   thread_local std::vector<Neighbour> near;
-  tree_.nearest(point, k, size, near);
-  f.radius = near.size() >= k && !near.empty() ? std::sqrt(near.back().distance_squared) : size;
+  const double farthest = tree_.nearest_in_any_order(point, k, size, near);
+  f.radius = near.size() >= k && !near.empty() ? std::sqrt(farthest) : size;
   // A flattened search: distances grow with the offset along the normal, so photons on a nearby wall at a
   // corner do not bleed in (POV-Ray photons.cpp, gatherPhotonsRec's "discFix").
   const double limit = f.radius * f.radius;
