@@ -186,11 +186,11 @@ ShootingResult shoot_caustic_photons(const scene::Scene& scene, const accel::Acc
 
   const auto combos_at = [&](double spacing) {
     std::vector<Combo> combos;
-    for (size_t li = 0; li < scene.lights.size(); ++li)
+    for (size_t li = 0; li < scene.lights.size(); ++li) {
+      // A shadowless light is POV-Ray's fill light, which shoots no photons (photonstrategytask.cpp,
+      // PhotonStrategyTask::Run skips FILL_LIGHT_SOURCE).
+      if (scene.lights[li].shadowless) continue;
       for (size_t ti = 0; ti < targets.size(); ++ti) {
-        // A shadowless light is POV-Ray's fill light, which shoots no photons (photonstrategytask.cpp,
-        // PhotonStrategyTask::Run skips FILL_LIGHT_SOURCE).
-        if (scene.lights[li].shadowless) continue;
         if (!combo_active(scene.lights[li].photons, *targets[ti].settings)) continue;
         if (!targets[ti].bounds.is_finite()) continue;  // an infinite target has no bounding sphere
         Combo c = make_combo(scene.lights[li], targets[ti], spacing);
@@ -198,6 +198,7 @@ ShootingResult shoot_caustic_photons(const scene::Scene& scene, const accel::Acc
         c.target_index = ti;
         if (c.dtheta > 0) combos.push_back(c);
       }
+    }
     return combos;
   };
   std::vector<Combo> combos = combos_at(settings.spacing);
