@@ -63,6 +63,9 @@ class Integrator {
                        const PixelRect& /*region*/, double /*time*/) {}
   /// Called before each tile with the context that will render it.
   virtual void begin_tile(TraceContext& /*context*/) const {}
+  /// True when a sample's colour depends on the tile that traces it (radiosity's per-tile records), so
+  /// that a tile must trace every sample it uses itself.
+  virtual bool samples_depend_on_tile() const { return false; }
   /// A line for --stats about the integrator's own work (empty: nothing to say).
   virtual std::string summary() const { return {}; }
 };

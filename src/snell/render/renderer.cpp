@@ -20,8 +20,10 @@
 
 #include "snell/math/pcg32.hpp"
 #include "snell/render/finite_sample.hpp"
+#include "snell/render/first_sample_grid.hpp"
 #include "snell/render/integrator.hpp"
 #include "snell/render/pixel_estimators.hpp"
+#include "snell/render/two_pass_queue.hpp"
 #include "snell/scene/blur_confidence.hpp"
 #include "snell/scene/hex_lens_grid.hpp"
 #include "snell/scene/lens_samples.hpp"
@@ -123,6 +125,10 @@ RenderResult Renderer::render() const {
 
 namespace {
 
+// The most pixels one batch of two-pass anti-aliasing keeps first samples for (48 MiB of colours): a
+// 1600x1200 image is one batch.
+constexpr size_t kMaxGridPixels = size_t{1} << 21;
+
 /// The colour one image point sees: its camera ray, or the mean of a mesh camera's rays there.
 Color trace_camera_point(const scene::Camera& camera, const Integrator& integrator, double sx, double sy,
                          double time, TraceContext& ctx) {
@@ -151,7 +157,10 @@ RenderStats Renderer::render_into(io::Image& image) const {
   if (image.width != w || image.height != h || !image.has_alpha())
     throw std::invalid_argument("render target does not match the image size");
   std::vector<Tile> tiles;
-  if (!options_.tile_source) tiles = make_tiles(w, h, region());
+  if (options_.tiles)
+    tiles = *options_.tiles;
+  else if (!options_.tile_source)
+    tiles = make_tiles(w, h, region());
   // Motion blur and --spp samples already spread over each pixel, so they are its anti-aliasing too.
   // Focal blur is anti-aliased as POV-Ray does it: a pixel that differs from a neighbour gets depth x depth
   // sub-samples, each one a whole focal-blur estimate.
@@ -171,12 +180,23 @@ RenderStats Renderer::render_into(io::Image& image) const {
   const size_t total_tiles = tiles.size();
 
   auto cancelled = [&] { return options_.cancel && options_.cancel->load(std::memory_order_relaxed); };
-  auto tile_finished = [&] {
-    const size_t done = ++tiles_done;
-    if (options_.progress && total_tiles > 0) {
+  // Anti-aliasing's first samples traced once for all tiles (first_sample_grid.hpp) where a tile source
+  // (a distributed render) does not hand tiles out one by one and samples do not depend on their tile.
+  const bool two_passes =
+      antialias && options_.aa_method != 2 && !options_.tile_source && !integrator->samples_depend_on_tile();
+  // Progress counts tile passes: two per tile when the first samples are a pass of their own.
+  std::atomic<size_t> passes_done{0};
+  const size_t total_passes = total_tiles * (two_passes ? 2 : 1);
+  auto pass_finished = [&] {
+    const size_t done = ++passes_done;
+    if (options_.progress && total_passes > 0) {
       std::lock_guard lock(progress_mutex);
-      options_.progress(static_cast<double>(done) / static_cast<double>(total_tiles));
+      options_.progress(static_cast<double>(done) / static_cast<double>(total_passes));
     }
+  };
+  auto tile_finished = [&] {
+    ++tiles_done;
+    pass_finished();
   };
 
   // A point with no camera ray (outside a fisheye's circle) is black, as POV-Ray leaves it.
@@ -281,17 +301,42 @@ RenderStats Renderer::render_into(io::Image& image) const {
     return sum / static_cast<double>(n * n + 1);
   };
 
-  // Each tile is self-contained: with anti-aliasing it traces the first pass over itself, the row above and
-  // the column to its left (first-pass samples depend only on their pixel), so its pixels are the same
-  // whichever tiles, ranks or resumed runs render the rest of the image.
-  auto render_tile = [&](const Tile& tile) {
+  // Method 1 over one tile, with `first(x, y)` its block's first samples and those of its border.
+  auto antialias_tile = [&](const Tile& tile, const auto& first, TraceContext& ctx) {
+    const PixelRect& t = tile.rect;
+    const PixelRect f = full_tile_rect(tile.index, w, h);
+    const int fw = f.x1 - f.x0;
+    std::vector<Color> out;
+    std::vector<char> refined;
+    supersample_block(
+        f, options_.aa_threshold, options_.aa_compare_exponent, first,
+        [&](int x, int y, const Color& c) { return supersample(x, y, c, ctx); }, out, refined);
+    for (int y = t.y0; y < t.y1; ++y)
+      for (int x = t.x0; x < t.x1; ++x) image.set(x, y, out[static_cast<size_t>(y - f.y0) * fw + (x - f.x0)]);
+  };
+
   // Same denormal handling on every thread: Embree's threads flush denormals to zero and a caller's may
   // not, and a pixel must not depend on which thread traced it.
+  auto begin_tile = [&]() -> TraceContext& {
 #if defined(__SSE__)
     _mm_setcsr(_mm_getcsr() | kFlushDenormals);
 #endif
     TraceContext& ctx = contexts.local();
     integrator->begin_tile(ctx);
+    return ctx;
+  };
+  auto end_tile = [&](const Tile& tile) {
+    const PixelRect& t = tile.rect;
+    for (int y = t.y0; y < t.y1; ++y)
+      for (int x = t.x0; x < t.x1; ++x) image.set_alpha(x, y, 1.0f);
+    if (options_.tile_done) options_.tile_done(tile, image);
+  };
+
+  // A self-contained tile: with anti-aliasing it traces the first pass over itself, the row above and the
+  // column to its left (first-pass samples depend only on their pixel), so its pixels are the same
+  // whichever tiles, ranks or resumed runs render the rest of the image.
+  auto render_tile = [&](const Tile& tile) {
+    TraceContext& ctx = begin_tile();
     const PixelRect& t = tile.rect;
     if (antialias && options_.aa_method == 2) {
       render_adaptive(t, ctx);
@@ -311,19 +356,10 @@ RenderStats Renderer::render_into(io::Image& image) const {
       for (int x = f.x0; x < f.x1; ++x) first[first_index(x, f.y0 - 1)] = first_sample(x, f.y0 - 1, ctx);
       for (int y = f.y0; y < f.y1; ++y)
         for (int x = f.x0 - 1; x < f.x1; ++x) first[first_index(x, y)] = first_sample(x, y, ctx);
-      std::vector<Color> out;
-      std::vector<char> refined;
-      supersample_block(
-          f, options_.aa_threshold, options_.aa_compare_exponent,
-          [&](int x, int y) { return first[first_index(x, y)]; },
-          [&](int x, int y, const Color& c) { return supersample(x, y, c, ctx); }, out, refined);
-      for (int y = t.y0; y < t.y1; ++y)
-        for (int x = t.x0; x < t.x1; ++x)
-          image.set(x, y, out[static_cast<size_t>(y - f.y0) * (fw - 1) + (x - f.x0)]);
+      antialias_tile(
+          tile, [&](int x, int y) { return first[first_index(x, y)]; }, ctx);
     }
-    for (int y = t.y0; y < t.y1; ++y)
-      for (int x = t.x0; x < t.x1; ++x) image.set_alpha(x, y, 1.0f);
-    if (options_.tile_done) options_.tile_done(tile, image);
+    end_tile(tile);
   };
 
   // A tile source (a distributed render's queue) is drained by one loop per thread.
@@ -340,20 +376,66 @@ RenderStats Renderer::render_into(io::Image& image) const {
     });
   };
 
+  // Calls work(i) for each of `count` tiles on the render's threads until cancelled.
+  auto for_each_tile = [&](size_t count, const auto& work) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i != r.end(); ++i) {
+        if (cancelled()) {
+          stopped = true;
+          return;
+        }
+        work(i);
+      }
+    });
+  };
+
+  // Anti-aliasing in two passes over each batch of tiles (first_sample_grid.hpp): a tile's border is read
+  // from its neighbours' first samples, the work handed out by a TwoPassQueue, one loop per thread.
+  // The same image as render_tile's.
+  auto render_two_passes = [&] {
+    const int loops = options_.threads > 0 ? options_.threads : tbb::this_task_arena::max_concurrency();
+    for (const std::span<const Tile> batch : tile_batches(tiles, w, h, kMaxGridPixels)) {
+      FirstSampleGrid grid(batch, w, h);
+      std::vector<std::vector<size_t>> needs;
+      for (size_t i = 0; i < batch.size(); ++i) needs.push_back(grid.needs(i));
+      TwoPassQueue queue(std::move(needs));
+      tbb::parallel_for(0, loops, [&](int) {
+        try {
+          while (!cancelled()) {
+            const TwoPassQueue::Work work = queue.next();
+            if (work.pass == TwoPassQueue::Work::Pass::none) return;
+            TraceContext& ctx = begin_tile();
+            if (work.pass == TwoPassQueue::Work::Pass::first) {
+              grid.for_each_owned(work.tile, [&](int x, int y) { grid.at(x, y) = first_sample(x, y, ctx); });
+              queue.first_done(work.tile);
+              pass_finished();
+            } else {
+              const Tile& tile = batch[work.tile];
+              antialias_tile(
+                  tile, [&](int x, int y) { return grid.at(x, y); }, ctx);
+              end_tile(tile);
+              tile_finished();
+            }
+          }
+          stopped = true;
+          queue.abandon();
+        } catch (...) {
+          queue.abandon();
+          throw;
+        }
+      });
+      if (stopped) return;
+    }
+  };
+
   auto run_all = [&] {
     integrator->prepare(*camera, w, h, region(), options_.time);
     if (options_.tile_source) return drain_source();
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                        for (size_t i = r.begin(); i != r.end(); ++i) {
-                          if (cancelled()) {
-                            stopped = true;
-                            return;
-                          }
-                          render_tile(tiles[i]);
-                          tile_finished();
-                        }
-                      });
+    if (two_passes) return render_two_passes();
+    for_each_tile(tiles.size(), [&](size_t i) {
+      render_tile(tiles[i]);
+      tile_finished();
+    });
   };
   if (options_.threads > 0) {
     tbb::task_arena arena(options_.threads);

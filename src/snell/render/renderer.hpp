@@ -49,9 +49,12 @@ struct RenderOptions {
   /// alpha 0. Every pixel inside comes out exactly as in a render of the whole image.
   PixelRect region;
   /// When set, tiles come from here instead of the region's tiling (region unused): each render thread
-  /// asks for the next tile until it returns nothing. Calls may overlap. The `snell` program renders this
-  /// way (src/cli/local_render.cpp), leaving out the tiles of a resume file and sharing them with MPI ranks.
+  /// asks for the next tile until it returns nothing. Calls may overlap. Rank 0 of a distributed render
+  /// renders this way (src/cli/local_render.cpp), sharing the tiles with the other ranks.
   std::function<std::optional<Tile>()> tile_source;
+  /// When set (and no tile_source), the tiles to render, in index order, instead of the region's tiling:
+  /// the `snell` program's tiles, less those a resume file holds (src/cli/local_render.cpp).
+  std::optional<std::vector<Tile>> tiles;
   /// Set from another thread (Ctrl-C) to stop early; finished tiles stay in the image.
   const std::atomic<bool>* cancel = nullptr;
   /// Called with the fraction done (0..1), serialised, from worker threads.

@@ -28,6 +28,7 @@ class WhittedIntegrator final : public Integrator {
   void prepare(const scene::Camera& camera, int width, int height, const PixelRect& region,
                double time) override;
   void begin_tile(TraceContext& context) const override;
+  bool samples_depend_on_tile() const override { return radiosity_ != nullptr; }
   std::string summary() const override;
 
   /// Colour seen along `ray` (unit direction) at recursion `level` (camera rays are level 1), with the
