@@ -67,9 +67,10 @@ std::pair<double, double> value_and_slope(const Poly& p, double x) {
   return {v, d};
 }
 
-/// Safeguarded Newton on [a, b], where p is monotonic and changes sign (p(a) = fa, p(b) = fb), to a
+/// Safeguarded Newton on [a, b], where p changes sign (p(a) = fa, p(b) = fb) at its one root there, to a
 /// relative accuracy `accuracy` (the roots of derivatives only split intervals and need less).
-double refine_bracketed(const Poly& p, double a, double b, double fa, double fb, double accuracy) {
+double refine_bracketed(const Poly& p, double a, double b, double fa, double fb, double accuracy,
+                        double start = std::numeric_limits<double>::quiet_NaN()) {
   // The secant through the ends starts nearer the root than the midpoint, and replaces a Newton step
   // that leaves the bracket (near a flat end); the Illinois rule halves the value kept at an end that
   // stays put twice, so the secant steps cannot stall on one side.
@@ -78,7 +79,7 @@ double refine_bracketed(const Poly& p, double a, double b, double fa, double fb,
     const double x = a - fa * (b - a) / (fb - fa);
     return x > a && x < b ? x : 0.5 * (a + b);
   };
-  double x = secant();
+  double x = start > a && start < b ? start : secant();
   for (int it = 0; it < 100; ++it) {
     if (b - a <= accuracy * std::max({1.0, std::fabs(a), std::fabs(b)})) break;
     const auto [f, df] = value_and_slope(p, x);
@@ -119,12 +120,16 @@ constexpr std::array<RatioTable, kMaxPolynomialDegree + 1> kBernsteinRatios = []
   return ratios;
 }();
 
-/// True when p has the same strict sign all over [lo, hi], shown by its Bernstein coefficients on that
-/// interval (their convex hull holds the graph: Farouki and Rajan, "On the numerical condition of
-/// polynomials in Bernstein form", 1987). Most calls from the spline shapes have no root in the
-/// segment's window, and this settles them without isolating anything. Coefficients within 1e-9 of the
-/// largest count as undecided, a margin far above the rounding of the change of basis on such windows.
-bool keeps_sign(const Poly& p, double lo, double hi) {
+/// The sign changes of p's Bernstein coefficients on [lo, hi], which bound its roots there and match
+/// their count's parity (Descartes' rule in Bernstein form): 0 proves p keeps its strict sign all over
+/// [lo, hi] (the coefficients' convex hull holds the graph: Farouki and Rajan, "On the numerical condition
+/// of polynomials in Bernstein form", 1987), 1 that exactly one simple root lies inside. Most calls from
+/// the spline shapes have no root in the segment's window, and many one, settled without isolating. -1:
+/// undecided, when a coefficient lies within 1e-9 of the largest of zero, a margin far above the rounding
+/// of the change of basis on such windows.
+/// With one change, `crossing` (when given) receives where the control polygon crosses zero: a start
+/// near the root, as Bezier clipping's (Sederberg and Nishita, 1990).
+int bernstein_sign_changes(const Poly& p, double lo, double hi, double* crossing = nullptr) {
   const int n = p.degree;
   // q(t) = p(lo + (hi - lo) t): Taylor shift to lo (repeated synthetic division), then scale.
   std::array<double, kMaxPolynomialDegree + 1> q = p.c;
@@ -135,16 +140,26 @@ bool keeps_sign(const Poly& p, double lo, double hi) {
   for (int i = 0; i <= n; ++i, power *= width) q[i] *= power;
   // Bernstein coefficients b_k = sum_{i <= k} C(k, i) / C(n, i) q_i, the ratios tabulated per degree.
   const auto& ratio = kBernsteinRatios[static_cast<size_t>(n)];
-  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest, largest = 0;
+  std::array<double, kMaxPolynomialDegree + 1> b{};
+  double largest = 0;
   for (int k = 0; k <= n; ++k) {
-    double b = 0;
-    for (int i = 0; i <= k; ++i) b += ratio[k][i] * q[i];
-    lowest = std::min(lowest, b);
-    highest = std::max(highest, b);
-    largest = std::max(largest, std::fabs(b));
+    for (int i = 0; i <= k; ++i) b[k] += ratio[k][i] * q[i];
+    largest = std::max(largest, std::fabs(b[k]));
   }
   const double margin = 1e-9 * largest;
-  return lowest > margin || highest < -margin;
+  int changes = 0, last = 0;
+  for (int k = 0; k <= n; ++k) {
+    if (!(std::fabs(b[k]) > margin)) return -1;
+    if (k > 0 && (b[k] > 0) != (b[k - 1] > 0)) {
+      ++changes;
+      last = k;
+    }
+  }
+  if (changes == 1 && crossing) {
+    const double t = (last - 1 + b[last - 1] / (b[last - 1] - b[last])) / n;
+    *crossing = lo + width * t;
+  }
+  return changes;
 }
 
 /// Isolation by derivatives (C. Yuksel, "High-Performance Polynomial Root Finding for Graphics", HPG 2022):
@@ -179,7 +194,8 @@ int isolate(const Poly& p, double lo, double hi, bool open_lo, int limit, double
   const Poly dp = derivative(p);
   std::array<double, kMaxPolynomialDegree + 1> points{};
   points[0] = lo;
-  // (keeps_sign here too measured slower: the derivatives of a polynomial with roots mostly have them.)
+  // (sign changes tested here too measured slower: the derivatives of a polynomial with roots mostly have
+  // them.)
   const int critical = isolate(dp, lo, hi, false, kMaxPolynomialDegree, kCriticalAccuracy, points.data() + 1);
   const int count = critical + 2;
   points[static_cast<size_t>(count - 1)] = hi;
@@ -264,7 +280,17 @@ int real_roots(std::span<const double> coeffs, double lo, double hi, std::span<d
   if (roots.size() < static_cast<size_t>(p.degree))
     throw std::invalid_argument("real_roots: output span shorter than the degree");
   if (p.degree <= 2) return closed_form_roots(p, lo, hi, roots, max_roots);
-  if (keeps_sign(p, lo, hi)) return 0;
+  double crossing = 0;
+  const int changes = bernstein_sign_changes(p, lo, hi, &crossing);
+  if (changes == 0 || max_roots <= 0) return 0;
+  if (changes == 1) {
+    // The one root inside, bracketed by the ends (their signs differ beyond the margin).
+    const double at_lo = p(lo), at_hi = p(hi);
+    if ((at_lo > 0) != (at_hi > 0) && at_lo != 0 && at_hi != 0) {
+      roots[0] = refine_bracketed(p, lo, hi, at_lo, at_hi, kRootAccuracy, crossing);
+      return roots[0] > lo && roots[0] <= hi ? 1 : 0;
+    }
+  }
   return isolate(p, lo, hi, true, std::min(max_roots, static_cast<int>(roots.size())), kRootAccuracy,
                  roots.data());
 }
@@ -280,7 +306,7 @@ bool has_root(std::span<const double> coeffs, double lo, double hi) {
   // Opposite signs at the ends: a root between them, wherever it is (most shadow rays that are blocked).
   const double at_lo = p(lo), at_hi = p(hi);
   if ((at_lo < 0 && at_hi > 0) || (at_lo > 0 && at_hi < 0)) return true;
-  if (keeps_sign(p, lo, hi)) return false;
+  if (bernstein_sign_changes(p, lo, hi) == 0) return false;
   double root;
   return isolate(p, lo, hi, true, 1, kRootAccuracy, &root, false) > 0;
 }
