@@ -376,8 +376,8 @@ RenderStats Renderer::render_into(io::Image& image) const {
     });
   };
 
-  // Calls work(i) for each of `count` tiles on the render's threads until cancelled.
-  auto for_each_tile = [&](size_t count, const auto& work) {
+  // Calls work(i) for i below `count` (tiles, or two-pass work) on the render's threads until cancelled.
+  auto for_each_piece = [&](size_t count, const auto& work) {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i) {
         if (cancelled()) {
@@ -390,37 +390,37 @@ RenderStats Renderer::render_into(io::Image& image) const {
   };
 
   // Anti-aliasing in two passes over each batch of tiles (first_sample_grid.hpp): a tile's border is read
-  // from its neighbours' first samples, the work handed out by a TwoPassQueue, one loop per thread.
+  // from its neighbours' first samples, the work handed out by a TwoPassQueue.
   // The same image as render_tile's.
+  // One task per piece of work, each taking the queue's next, so that idle threads steal work as they do
+  // over a one-pass render's tiles.
   auto render_two_passes = [&] {
-    const int loops = options_.threads > 0 ? options_.threads : tbb::this_task_arena::max_concurrency();
     for (const std::span<const Tile> batch : tile_batches(tiles, w, h, kMaxGridPixels)) {
       FirstSampleGrid grid(batch, w, h);
       std::vector<std::vector<size_t>> needs;
       for (size_t i = 0; i < batch.size(); ++i) needs.push_back(grid.needs(i));
       TwoPassQueue queue(std::move(needs));
-      tbb::parallel_for(0, loops, [&](int) {
+      auto work_once = [&] {
+        const TwoPassQueue::Work work = queue.next();
+        if (work.pass == TwoPassQueue::Work::Pass::none) return;
+        TraceContext& ctx = begin_tile();
+        if (work.pass == TwoPassQueue::Work::Pass::first) {
+          grid.for_each_owned(work.tile, [&](int x, int y) { grid.at(x, y) = first_sample(x, y, ctx); });
+          queue.first_done(work.tile);
+          pass_finished();
+        } else {
+          const Tile& tile = batch[work.tile];
+          antialias_tile(
+              tile, [&](int x, int y) { return grid.at(x, y); }, ctx);
+          end_tile(tile);
+          tile_finished();
+        }
+      };
+      for_each_piece(2 * batch.size(), [&](size_t) {
         try {
-          while (!cancelled()) {
-            const TwoPassQueue::Work work = queue.next();
-            if (work.pass == TwoPassQueue::Work::Pass::none) return;
-            TraceContext& ctx = begin_tile();
-            if (work.pass == TwoPassQueue::Work::Pass::first) {
-              grid.for_each_owned(work.tile, [&](int x, int y) { grid.at(x, y) = first_sample(x, y, ctx); });
-              queue.first_done(work.tile);
-              pass_finished();
-            } else {
-              const Tile& tile = batch[work.tile];
-              antialias_tile(
-                  tile, [&](int x, int y) { return grid.at(x, y); }, ctx);
-              end_tile(tile);
-              tile_finished();
-            }
-          }
-          stopped = true;
-          queue.abandon();
+          work_once();
         } catch (...) {
-          queue.abandon();
+          queue.abandon();  // no thread may wait for a first pass this one will not finish
           throw;
         }
       });
@@ -432,7 +432,7 @@ RenderStats Renderer::render_into(io::Image& image) const {
     integrator->prepare(*camera, w, h, region(), options_.time);
     if (options_.tile_source) return drain_source();
     if (two_passes) return render_two_passes();
-    for_each_tile(tiles.size(), [&](size_t i) {
+    for_each_piece(tiles.size(), [&](size_t i) {
       render_tile(tiles[i]);
       tile_finished();
     });
