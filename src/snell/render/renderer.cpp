@@ -347,17 +347,11 @@ RenderStats Renderer::render_into(io::Image& image) const {
       // A tile is one of POV-Ray's render blocks (both 32 pixels, aligned with the image): its first samples,
       // and those of the row above and the column to the left, outside the image too as POV-Ray traces them.
       // A tile cut by a partial render's region is worked whole, as its pixels' turns depend on the rest.
-      const PixelRect f = full_tile_rect(tile.index, w, h);
-      const int fw = f.x1 - f.x0 + 1;
-      std::vector<Color> first(static_cast<size_t>(fw) * (f.y1 - f.y0 + 1));
-      auto first_index = [&](int x, int y) {
-        return static_cast<size_t>(y - f.y0 + 1) * fw + (x - f.x0 + 1);
-      };
-      for (int x = f.x0; x < f.x1; ++x) first[first_index(x, f.y0 - 1)] = first_sample(x, f.y0 - 1, ctx);
-      for (int y = f.y0; y < f.y1; ++y)
-        for (int x = f.x0 - 1; x < f.x1; ++x) first[first_index(x, y)] = first_sample(x, y, ctx);
+      // A grid of this tile alone gives it every border sample to trace.
+      FirstSampleGrid grid(std::span<const Tile>(&tile, 1), w, h);
+      grid.for_each_owned(0, [&](int x, int y) { grid.at(x, y) = first_sample(x, y, ctx); });
       antialias_tile(
-          tile, [&](int x, int y) { return first[first_index(x, y)]; }, ctx);
+          tile, [&](int x, int y) { return grid.at(x, y); }, ctx);
     }
     end_tile(tile);
   };
@@ -390,10 +384,9 @@ RenderStats Renderer::render_into(io::Image& image) const {
   };
 
   // Anti-aliasing in two passes over each batch of tiles (first_sample_grid.hpp): a tile's border is read
-  // from its neighbours' first samples, the work handed out by a TwoPassQueue.
-  // The same image as render_tile's.
-  // One task per piece of work, each taking the queue's next, so that idle threads steal work as they do
-  // over a one-pass render's tiles.
+  // from its neighbours' first samples, the work handed out by a TwoPassQueue; the same image as
+  // render_tile's. One task per piece of work, each taking the queue's next, so that idle threads steal
+  // work as they do over a one-pass render's tiles.
   auto render_two_passes = [&] {
     for (const std::span<const Tile> batch : tile_batches(tiles, w, h, kMaxGridPixels)) {
       FirstSampleGrid grid(batch, w, h);
