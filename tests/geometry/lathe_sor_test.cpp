@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "shape_checks.hpp"
+#include "snell/geometry/axial_ray.hpp"
 #include "snell/geometry/lathe.hpp"
 #include "snell/geometry/sor.hpp"
 
@@ -127,4 +129,47 @@ TEST(SorTest, HermiteCubicReproducesACone) {
 TEST(SorTest, RejectsFallingHeights) {
   const std::vector<Vec2> p{{1, 0}, {1, 1}, {1, 0.5}, {1, 2}};
   EXPECT_THROW(Sor(p, false), std::invalid_argument);
+}
+
+// The heights at which a ray is near the axis, by which lathe and sor skip pieces out of reach.
+TEST(AxialRayTest, HeightsWithinReach) {
+  AxialRay axial;
+  // From x = -5 climbing at 45 degrees through the axis plane: within 1 of it for x in [-1, 1], which the
+  // ray passes at heights 4 to 6.
+  ASSERT_TRUE(axial.prepare({{-5, 0, 0}, {2, 2, 0}, 0}));
+  auto [lo, hi] = axial.heights_within(1, axial.u_of(0), axial.u_of(kInfinity));
+  EXPECT_NEAR(lo, 4, 1e-12);
+  EXPECT_NEAR(hi, 6, 1e-12);
+  // A window ending at t = 2.5 (x = 0, y = 5) keeps the lower half only.
+  std::tie(lo, hi) = axial.heights_within(1, axial.u_of(0), axial.u_of(2.5));
+  EXPECT_NEAR(lo, 4, 1e-12);
+  EXPECT_NEAR(hi, 5, 1e-12);
+  // Going down, the same band in the other order.
+  ASSERT_TRUE(axial.prepare({{-5, 10, 0}, {1, -1, 0}, 0}));
+  std::tie(lo, hi) = axial.heights_within(1, axial.u_of(0), axial.u_of(kInfinity));
+  EXPECT_NEAR(lo, 4, 1e-12);
+  EXPECT_NEAR(hi, 6, 1e-12);
+  // Passing 2 from the axis: never within 1 of it.
+  ASSERT_TRUE(axial.prepare({{-5, 0, 2}, {1, 1, 0}, 0}));
+  std::tie(lo, hi) = axial.heights_within(1, axial.u_of(0), axial.u_of(kInfinity));
+  EXPECT_GT(lo, hi);
+  // Along the axis at distance 0.5: every height of the window.
+  ASSERT_TRUE(axial.prepare({{0.5, 1, 0}, {0, 1, 0}, 0}));
+  std::tie(lo, hi) = axial.heights_within(1, axial.u_of(0), axial.u_of(3));
+  EXPECT_NEAR(lo, 1, 1e-12);
+  EXPECT_NEAR(hi, 4, 1e-12);
+}
+
+// A many-piece outline (the wine glass of POV-Ray's sor1.pov), whose rays skip most pieces as out of
+// reach: the skipped ones must be those the band tests would skip, whatever the window.
+TEST(SorTest, ManyPiecesAgreeWithInsideAndWindows) {
+  const std::vector<Vec2> glass{
+      {.517241379, -.132625995}, {.249336870, 0.000000},    {.068965517, .031830239},
+      {.021220159, .050397878},  {.058355438, .347480106},  {.132625995, .381962865},
+      {.196286472, .464190981},  {.238726790, .602122016},  {.249336870, .721485411},
+      {.233421751, .864721485},  {.167108753, 1.000000000}, {.084880637, 1.055702918}};
+  shape_checks::check_random_rays(Sor(glass, false), true, 3000);
+  std::vector<Vec2> outline;
+  for (const Vec2& p : glass) outline.push_back(p);
+  shape_checks::check_random_rays(Lathe(Outline(lathe_pieces(SplineKind::cubic, outline))), false, 3000);
 }

@@ -5,6 +5,7 @@
 // from the axis is a u^2 + b u + c.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "snell/math/ray.hpp"
@@ -44,6 +45,24 @@ struct AxialRay {
     double u0 = (y_lo - slack - o.y) * inv_dy, u1 = (y_hi + slack - o.y) * inv_dy;
     if (u0 > u1) std::swap(u0, u1);
     return {t_of(u0), t_of(u1)};
+  }
+
+  /// The heights [y_lo, y_hi] a non-horizontal ray passes while it is within `reach` of the axis and
+  /// between u_lo and u_hi (empty, y_lo > y_hi, where it never is). A piece whose height band lies outside
+  /// them is out of reach: a loop over a shape's pieces skips it without its band tests, which cost more
+  /// than the rest of a shadow ray's test of a sor (sor1.pov: 9 pieces, ~50 instructions each).
+  std::pair<double, double> heights_within(double reach, double u_lo, double u_hi) const {
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    if (a > 0) {
+      const double room = reach * reach - (c - b * b / (4 * a));  // reach^2 less the least rho^2
+      if (!(room >= 0)) return {kNone, -kNone};
+      const double half = std::sqrt(room / a), closest = -b / (2 * a);
+      u_lo = std::max(u_lo, closest - half);
+      u_hi = std::min(u_hi, closest + half);
+    }
+    if (!(u_lo <= u_hi)) return {kNone, -kNone};
+    const double y0 = o.y + u_lo * dn.y, y1 = o.y + u_hi * dn.y;
+    return {std::min(y0, y1), std::max(y0, y1)};
   }
 
   /// Whether a non-horizontal ray stays out of the ring r_min <= r <= r_max while it crosses the height

@@ -34,6 +34,9 @@ class Lathe final : public Shape {
 
   Outline profile_;
   double radius_;
+  /// A little beyond radius_, and a pad on the pieces' height bands: a piece out of this reach is one
+  /// its band tests (with their smaller slack) would skip (as Sor's).
+  double reach_, band_pad_;
 };
 
 }  // namespace snell::geometry

@@ -43,6 +43,9 @@ class Sor final : public Shape {
 
   std::vector<Piece> pieces_;
   double radius_ = 0;
+  /// A little beyond radius_, and a pad on the pieces' height bands, wide enough that a piece skipped
+  /// for being out of this reach is one its band tests (with their smaller slack) would skip.
+  double reach_ = 0, band_pad_ = 0;
   bool open_;
 };
 
