@@ -11,6 +11,7 @@
 #include "snell/geometry/disc.hpp"
 #include "snell/geometry/sphere.hpp"
 #include "snell/math/constants.hpp"
+#include "snell/math/pcg32.hpp"
 #include "snell/scene/object.hpp"
 
 namespace snell::scene {
@@ -216,6 +217,55 @@ TEST(CsgTest, InvertedUnionLosesItsInnerSurfaces) {
   shell->all_hits({{-5, 0, 0}, {1, 0, 0}, 0}, 1e-9, kFar, all);
   ASSERT_EQ(all.size(), 4u);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(all[static_cast<size_t>(i)].t, ts[i], 1e-12);
+}
+
+std::shared_ptr<Object> box(const Vec3& lo, const Vec3& hi, const math::Transform& placement,
+                            bool inverse = false) {
+  auto o = std::make_shared<Object>();
+  o->shape = std::make_shared<geometry::Box>(lo, hi);
+  o->transform = placement;
+  o->texture = material::Texture::default_texture();
+  o->flags.inverse = inverse;
+  return o;
+}
+
+// A difference of boxes alone takes its own path (csg_boxes.cpp); a sphere around everything, as a
+// clipping child, changes nothing but sends the same CSG down the general path. Both must find the same
+// hits, faces and answers for shadow rays, in csg_granite.pov's box frame (rotated, so the boxes keep
+// their transforms) and where faces coincide (a slot cut exactly to the block's faces), on random rays.
+TEST(CsgTest, DifferenceOfBoxesHitsAsTheGeneralPath) {
+  const math::Transform turn = math::Transform::rotate_xyz_degrees({10, 45, 0});
+  const std::vector<ObjectPtr> children{
+      box(Vec3(-1.5), Vec3(1.5), turn), box({-1.51, -1.25, -1.25}, {1.51, 1.25, 1.25}, turn, true),
+      box({-1.25, -1.51, -1.25}, {1.25, 1.51, 1.25}, turn, true),
+      box({-1.25, -1.25, -1.51}, {1.25, 1.25, 1.51}, turn, true),
+      box({-0.5, -1.5, -0.5}, {0.5, 0, 1.5}, turn, true)};  // faces on the block's bottom and front
+  std::vector<ObjectPtr> clipped = children;
+  clipped.push_back(sphere({0, 0, 0}, 100));
+  const ObjectPtr fast = csg(CsgKind::intersection, children),
+                  general = csg(CsgKind::intersection, clipped, 5);
+  math::Pcg32 rng(11);
+  int hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const auto coordinate = [&] { return 8 * rng.next_double() - 4; };
+    const Vec3 origin(coordinate(), coordinate(), coordinate());
+    Vec3 target(coordinate() / 2, coordinate() / 2, coordinate() / 2);
+    // A quarter of the rays run exactly along the axes of the boxes' space, grazing faces and edges.
+    if (i % 4 == 0)
+      target = origin + turn.vector(Vec3(i % 3 == 0 ? 1 : 0, i % 3 == 1 ? 1 : 0, i % 3 == 2 ? 1 : 0));
+    const math::Ray ray{origin, target - origin, 0};
+    SurfaceHit a, b;
+    const bool found = fast->intersect(ray, 1e-9, kFar, a);
+    ASSERT_EQ(found, general->intersect(ray, 1e-9, kFar, b)) << i;
+    EXPECT_EQ(fast->blocks(ray, 1e-9, 1.0), general->blocks(ray, 1e-9, 1.0)) << i;
+    if (!found) continue;
+    ++hits;
+    EXPECT_EQ(a.t, b.t) << i;
+    EXPECT_EQ(a.object, b.object) << i;
+    EXPECT_EQ(a.normal, b.normal) << i;
+    EXPECT_EQ(a.uv.u, b.uv.u) << i;
+  }
+  EXPECT_GT(hits, 2000);
 }
 
 TEST(CsgTest, EmptyCsgIsAnError) {

@@ -20,14 +20,18 @@ class Box final : public Shape {
   std::shared_ptr<const Shape> placed(const math::Transform& t) const override;
   std::string_view kind() const override { return "box"; }
 
- private:
-  /// The slab method's entry and exit parameters and the axes of their faces; false on a miss.
+  const Vec3& lo() const { return lo_; }
+  const Vec3& hi() const { return hi_; }
+  /// The slab method's entry and exit parameters (t0 <= t1) and the axes of their faces; false on a miss.
+  /// all_hits reports t0, then t1 where it differs, each with face_hit (CSG of boxes reads them so).
   bool slabs(const Ray& ray, double& t0, double& t1, int& axis0, int& axis1) const;
+  /// The crossing at `t` through the face across `axis` whose outward normal is `sign` along it.
+  LocalHit face_hit(const Ray& ray, double t, int axis, double sign) const;
+
+ private:
   /// Every crossing into `hits` (a HitBuffer<2>, or a NearestBuffer for intersect).
   template <typename Buffer>
   void gather(const Ray& ray, Buffer& hits) const;
-  /// The crossing at `t` through the face across `axis` whose outward normal is `sign` along it.
-  LocalHit face_hit(const Ray& ray, double t, int axis, double sign) const;
 
   Vec3 lo_, hi_;
 };

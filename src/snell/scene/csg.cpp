@@ -103,6 +103,7 @@ Csg::Csg(CsgKind kind, std::vector<std::shared_ptr<const Object>> children, size
   for (size_t i = 0; i < surface_children_; ++i)
     child_clip_bounds_.push_back(padded(children_[i]->world_bounds()));
   for (const auto& c : children_) inside_boxes_.push_back(inside_box(*c));
+  find_box_children();
 }
 
 bool Csg::child_inside(size_t j, const math::Vec3& p, double time) const {
@@ -140,6 +141,7 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
   const CsgKind kind = surface_kind(inverted);
   bool found = false;
   if (!clip_to_bounds(ray, t_min, t_max)) return false;
+  if (!box_children_.empty()) return intersect_boxes(ray, t_min, t_max, &hit);
   ScratchHits scratch;
   std::vector<SurfaceHit>& hits = scratch.list();
   for (size_t i = 0; i < surface_children_; ++i) {
@@ -183,6 +185,7 @@ bool Csg::intersect(const math::Ray& ray, double t_min, double t_max, SurfaceHit
 bool Csg::crosses(const math::Ray& ray, double t_min, double t_max, bool inverted) const {
   const CsgKind kind = surface_kind(inverted);
   if (!clip_to_bounds(ray, t_min, t_max)) return false;
+  if (!box_children_.empty()) return intersect_boxes(ray, t_min, t_max, nullptr);
   for (size_t i = 0; i < surface_children_; ++i) {
     if (!may_hit_child(i, ray, t_min, t_max)) continue;
     const Object& child = *children_[i];

@@ -10,6 +10,10 @@
 #include "snell/math/bounds.hpp"
 #include "snell/math/ray.hpp"
 
+namespace snell::geometry {
+class Box;
+}
+
 namespace snell::scene {
 
 struct Object;
@@ -81,6 +85,21 @@ class Csg {
   std::vector<math::Bounds3> inside_boxes_;
   /// children_[j]->inside(p, time), answered by inside_boxes_[j] where it can.
   bool child_inside(size_t j, const math::Vec3& p, double time) const;
+
+  /// An intersection (or difference) of still boxes alone (csg_boxes.cpp): its children's slabs, each
+  /// ray moved into each box's space once, decide the inside tests; empty for any other CSG.
+  struct BoxChild {
+    const geometry::Box* box;
+    double scale;  // of the child's inverse transform (largest row sum, plus its translation)
+    double size;   // the largest coordinate of its corners, in its own space
+  };
+  std::vector<BoxChild> box_children_;
+  static constexpr size_t kMaxBoxChildren = 8;
+  void find_box_children();
+  /// intersect and crosses over the window already clipped to the bounds, for box_children_.
+  bool intersect_boxes(const math::Ray& ray, double t_min, double t_max, SurfaceHit* hit) const;
+  /// Whether the hit at t of box child i lies in all the others, as keeps(intersection, ...) says.
+  bool boxes_keep(size_t i, double t, const math::Ray& ray, const math::Ray* local) const;
 };
 
 }  // namespace snell::scene
