@@ -33,10 +33,12 @@ std::shared_ptr<const geometry::Mesh> uv_sphere(int rings, int segments) {
   return std::make_shared<geometry::Mesh>(std::move(d));
 }
 
-scene::Scene instanced_scene(uint64_t seed) {
+/// 40 objects showing one UV sphere: 528 faces (placed in world space 40 times) or, with `large`, 3,744
+/// faces (beyond kWorldMeshTriangles together: instances of one copy).
+scene::Scene instanced_scene(uint64_t seed, bool large = false) {
   math::Pcg32 rng(seed);
   scene::Scene s = random_scene(seed, 20);
-  const auto mesh = uv_sphere(12, 24);
+  const auto mesh = large ? uv_sphere(40, 48) : uv_sphere(12, 24);
   for (int i = 0; i < 40; ++i) {
     const Transform t = Transform::translate(uniform_vec(rng, -10, 10)) *
                         Transform::rotate_xyz_degrees(uniform_vec(rng, 0, 360)) *
@@ -49,12 +51,10 @@ scene::Scene instanced_scene(uint64_t seed) {
   return s;
 }
 
-TEST(EmbreeMeshTest, InstancedNativeMeshesGiveTheBruteForceHits) {
-  const scene::Scene s = instanced_scene(7);
+void expect_brute_force_hits(const scene::Scene& s) {
   const auto embree = accel::make_accelerator("embree", s);
   const auto brute = accel::make_accelerator("none", s);
   EXPECT_EQ(embree->stats().mesh_instances, 40u);
-  EXPECT_EQ(embree->stats().native_triangles, uv_sphere(12, 24)->data().faces.size());
   math::Pcg32 rng(11);
   int hits = 0, same_face = 0;
   const int rays = 4000;
@@ -76,28 +76,46 @@ TEST(EmbreeMeshTest, InstancedNativeMeshesGiveTheBruteForceHits) {
   EXPECT_EQ(same_face, hits);
 }
 
+TEST(EmbreeMeshTest, InstancedNativeMeshesGiveTheBruteForceHits) {
+  // Large: one copy of the triangles, instanced.
+  const scene::Scene large = instanced_scene(7, true);
+  EXPECT_EQ(accel::make_accelerator("embree", large)->stats().native_triangles,
+            uv_sphere(40, 48)->data().faces.size());
+  expect_brute_force_hits(large);
+}
+
+TEST(EmbreeMeshTest, SmallMeshesPlacedInWorldSpaceGiveTheBruteForceHits) {
+  // Small: each object's copy placed in world space in the top scene.
+  const scene::Scene small = instanced_scene(7);
+  EXPECT_EQ(accel::make_accelerator("embree", small)->stats().native_triangles,
+            40 * uv_sphere(12, 24)->data().faces.size());
+  expect_brute_force_hits(small);
+}
+
 // Occlusion walks the instanced float triangles too: the filter redoes each in double and Embree stops
 // at the first one it accepts.
 TEST(EmbreeMeshTest, OccluderOfNativeMeshesAgreesWithBruteForce) {
-  const scene::Scene s = instanced_scene(9);
-  const auto embree = accel::make_accelerator("embree", s);
-  const auto brute = accel::make_accelerator("none", s);
-  math::Pcg32 rng(13);
-  int blocked = 0;
-  for (int i = 0; i < 4000; ++i) {
-    const math::Ray ray{uniform_vec(rng, -14, 14), normalize(uniform_vec(rng, -1, 1)), 0};
-    const RayKind kind = kKinds[i % 4];
-    const double t_max = i % 2 ? 1e30 : uniform(rng, 0.5, 15);
-    scene::SurfaceHit hb;
-    const bool fb = brute->intersect(ray, 1e-6, t_max, kind, hb);
-    const scene::Object* o = embree->occluder(ray, 1e-6, t_max, kind);
-    ASSERT_EQ(o != nullptr, fb) << "ray " << i;
-    if (!o) continue;
-    ++blocked;
-    scene::SurfaceHit own;
-    EXPECT_TRUE(o->visible_to(kind) && o->intersect(ray, 1e-6, t_max, own)) << "ray " << i;
+  for (const bool large : {false, true}) {
+    const scene::Scene s = instanced_scene(9, large);
+    const auto embree = accel::make_accelerator("embree", s);
+    const auto brute = accel::make_accelerator("none", s);
+    math::Pcg32 rng(13);
+    int blocked = 0;
+    for (int i = 0; i < 4000; ++i) {
+      const math::Ray ray{uniform_vec(rng, -14, 14), normalize(uniform_vec(rng, -1, 1)), 0};
+      const RayKind kind = kKinds[i % 4];
+      const double t_max = i % 2 ? 1e30 : uniform(rng, 0.5, 15);
+      scene::SurfaceHit hb;
+      const bool fb = brute->intersect(ray, 1e-6, t_max, kind, hb);
+      const scene::Object* o = embree->occluder(ray, 1e-6, t_max, kind);
+      ASSERT_EQ(o != nullptr, fb) << "ray " << i;
+      if (!o) continue;
+      ++blocked;
+      scene::SurfaceHit own;
+      EXPECT_TRUE(o->visible_to(kind) && o->intersect(ray, 1e-6, t_max, own)) << "ray " << i;
+    }
+    EXPECT_GT(blocked, 500);
   }
-  EXPECT_GT(blocked, 500);
 }
 
 TEST(EmbreeMeshTest, SmallMeshesStayUserGeometry) {

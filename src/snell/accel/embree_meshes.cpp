@@ -22,17 +22,22 @@ MeshSceneCache::~MeshSceneCache() {
   for (auto& [mesh, scene] : scenes_) rtcReleaseScene(scene);
 }
 
-RTCScene MeshSceneCache::scene_of(const geometry::Mesh& mesh) {
-  if (const auto found = scenes_.find(&mesh); found != scenes_.end()) return found->second;
-  const geometry::MeshData& data = mesh.data();
-  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+namespace {
+
+/// A committed Embree geometry of `data`'s triangles, its vertices placed by `placement` when given (a mesh
+/// walked in world space) and rounded to float; the filter redoes each candidate in double.
+RTCGeometry new_triangle_geometry(RTCDevice device, const geometry::MeshData& data,
+                                  const math::Transform* placement, void* user_data,
+                                  RTCFilterFunctionN filter) {
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), data.vertices.size()));
   if (vertices) {
     for (size_t i = 0; i < data.vertices.size(); ++i) {
-      vertices[3 * i] = static_cast<float>(data.vertices[i].x);
-      vertices[3 * i + 1] = static_cast<float>(data.vertices[i].y);
-      vertices[3 * i + 2] = static_cast<float>(data.vertices[i].z);
+      const Vec3 v = placement ? placement->point(data.vertices[i]) : data.vertices[i];
+      vertices[3 * i] = static_cast<float>(v.x);
+      vertices[3 * i + 1] = static_cast<float>(v.y);
+      vertices[3 * i + 2] = static_cast<float>(v.z);
     }
   }
   // The index triples are shared, not copied (12 bytes a triangle saved): the Mesh checked them to be in
@@ -40,10 +45,19 @@ RTCScene MeshSceneCache::scene_of(const geometry::Mesh& mesh) {
   static_assert(sizeof(data.faces[0]) == 3 * sizeof(unsigned));
   rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, data.faces.data(), 0,
                              3 * sizeof(unsigned), data.faces.size());
-  rtcSetGeometryUserData(geometry, user_data_);
-  rtcSetGeometryIntersectFilterFunction(geometry, filter_);
-  rtcSetGeometryOccludedFilterFunction(geometry, filter_);
+  rtcSetGeometryUserData(geometry, user_data);
+  rtcSetGeometryIntersectFilterFunction(geometry, filter);
+  rtcSetGeometryOccludedFilterFunction(geometry, filter);
   rtcCommitGeometry(geometry);
+  return geometry;
+}
+
+}  // namespace
+
+RTCScene MeshSceneCache::scene_of(const geometry::Mesh& mesh) {
+  if (const auto found = scenes_.find(&mesh); found != scenes_.end()) return found->second;
+  const geometry::MeshData& data = mesh.data();
+  RTCGeometry geometry = new_triangle_geometry(device_, data, nullptr, user_data_, filter_);
   RTCScene scene = rtcNewScene(device_);
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
   // Medium quality: a high-quality (spatial split) build of ten million triangles costs gigabytes.
@@ -55,6 +69,16 @@ RTCScene MeshSceneCache::scene_of(const geometry::Mesh& mesh) {
   scenes_.emplace(&mesh, scene);
   triangles_ += data.faces.size();
   return scene;
+}
+
+unsigned MeshSceneCache::attach_in_world(RTCScene top, const geometry::Mesh& mesh,
+                                         const scene::Object& object) {
+  RTCGeometry geometry = new_triangle_geometry(device_, mesh.data(), &object.transform, user_data_, filter_);
+  const unsigned id = rtcAttachGeometry(top, geometry);
+  rtcReleaseGeometry(geometry);
+  triangles_ += mesh.data().faces.size();
+  ++world_meshes_;
+  return id;
 }
 
 unsigned attach_mesh_instance(RTCDevice device, RTCScene top, RTCScene mesh_scene,

@@ -20,6 +20,11 @@ namespace snell::accel {
 /// -> 8, the image unchanged). Below a block of eight faces, the instance costs more than it saves.
 inline constexpr size_t kNativeMeshMinFaces = 8;
 
+/// The most triangles the copies of one mesh (one per object showing it) may take to be placed in world
+/// space each (MeshSceneCache::attach_in_world) rather than instanced: a few MiB of float vertices and
+/// Embree nodes at most, for one level of walk instead of two.
+inline constexpr size_t kWorldMeshTriangles = 65536;
+
 /// Largest coordinate of a box handed to Embree: its builder silently drops primitives whose bounds leave
 /// its valid float range (|x| < 1.844e18, FLT_LARGE in Embree's sources).
 inline constexpr double kMaxEmbreeCoordinate = 1e18;
@@ -42,8 +47,12 @@ class MeshSceneCache {
 
   /// The committed scene of `mesh`, built on first use.
   RTCScene scene_of(const geometry::Mesh& mesh);
+  /// Attaches `mesh` to `top` as triangles placed in world space by `object`'s transform, for small
+  /// meshes (kWorldMeshTriangles): one level of Embree's walk instead of two (an instance's ray moved into
+  /// its space and a second tree). Returns the geometry id.
+  unsigned attach_in_world(RTCScene top, const geometry::Mesh& mesh, const scene::Object& object);
   size_t triangles() const { return triangles_; }
-  size_t meshes() const { return scenes_.size(); }
+  size_t meshes() const { return scenes_.size() + world_meshes_; }
 
  private:
   RTCDevice device_;
@@ -51,6 +60,7 @@ class MeshSceneCache {
   RTCFilterFunctionN filter_;
   std::unordered_map<const geometry::Mesh*, RTCScene> scenes_;
   size_t triangles_ = 0;
+  size_t world_meshes_ = 0;
 };
 
 /// Attaches an instance of `mesh_scene` placed by `object`'s transform to `top`; returns its geometry id.

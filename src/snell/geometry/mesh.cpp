@@ -58,7 +58,7 @@ const TriangleTree& Mesh::tree() const {
 
 // Moeller and Trumbore 1997 without the edge tests: t and the barycentrics of the ray's crossing with the
 // face's plane.
-std::optional<LocalHit> Mesh::face_hit(int face, const Ray& ray) const {
+std::optional<Mesh::FaceCrossing> Mesh::face_crossing(int face, const Ray& ray) const {
   const auto& f = data_.faces[face];
   const Vec3 &a = data_.vertices[f[0]], &b = data_.vertices[f[1]], &c = data_.vertices[f[2]];
   const Vec3 e1 = b - a, e2 = c - a;
@@ -76,7 +76,7 @@ std::optional<LocalHit> Mesh::face_hit(int face, const Ray& ray) const {
     b2 /= sum;
   }
   if (!std::isfinite(t)) return std::nullopt;
-  return make_hit(face, t, b1, b2);
+  return FaceCrossing{t, b1, b2};
 }
 
 // mesh2 without normal_indices/uv_indices uses the face indices when the lists are per vertex (POV-Ray

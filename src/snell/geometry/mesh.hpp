@@ -48,12 +48,18 @@ class Mesh final : public Shape {
 
   const MeshData& data() const { return data_; }
 
-  /// The hit of `ray` with the plane of face `face`, its barycentric coordinates clamped to the triangle:
-  /// how a float hit found by Embree is redone in double precision. nullopt for a ray parallel to the face.
-  std::optional<LocalHit> face_hit(int face, const Ray& ray) const;
+  /// Where `ray` meets the plane of face `face` and its barycentric coordinates there, clamped to the
+  /// triangle: how a float hit found by Embree is redone in double precision. nullopt for a ray parallel to
+  /// the face or a non-finite t.
+  struct FaceCrossing {
+    double t, b1, b2;
+  };
+  std::optional<FaceCrossing> face_crossing(int face, const Ray& ray) const;
+  /// The hit at a crossing of face `face`: its normals interpolated and uv. Built for the nearest crossing
+  /// only (Embree's filter meets farther ones first, and shadow rays need none).
+  LocalHit make_hit(int face, double t, double b1, double b2) const;
 
  private:
-  LocalHit make_hit(int face, double t, double b1, double b2) const;
   bool crossing(int face, const Ray& ray, double t_min, double t_max, TriangleHit& hit) const;
   const std::array<int, 3>* normal_face(int face) const;
   const std::array<int, 3>* uv_face(int face) const;
