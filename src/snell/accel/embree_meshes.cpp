@@ -77,7 +77,6 @@ unsigned MeshSceneCache::attach_in_world(RTCScene top, const geometry::Mesh& mes
   const unsigned id = rtcAttachGeometry(top, geometry);
   rtcReleaseGeometry(geometry);
   triangles_ += mesh.data().faces.size();
-  ++world_meshes_;
   return id;
 }
 

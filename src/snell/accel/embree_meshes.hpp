@@ -52,7 +52,6 @@ class MeshSceneCache {
   /// its space and a second tree). Returns the geometry id.
   unsigned attach_in_world(RTCScene top, const geometry::Mesh& mesh, const scene::Object& object);
   size_t triangles() const { return triangles_; }
-  size_t meshes() const { return scenes_.size() + world_meshes_; }
 
  private:
   RTCDevice device_;
@@ -60,7 +59,6 @@ class MeshSceneCache {
   RTCFilterFunctionN filter_;
   std::unordered_map<const geometry::Mesh*, RTCScene> scenes_;
   size_t triangles_ = 0;
-  size_t world_meshes_ = 0;
 };
 
 /// Attaches an instance of `mesh_scene` placed by `object`'s transform to `top`; returns its geometry id.

@@ -61,14 +61,18 @@ LocalHit Box::face_hit(const Ray& ray, double t, int axis, double sign) const {
   return h;
 }
 
+LocalHit Box::slab_hit(const Ray& ray, double t, int axis, bool leaving) const {
+  // Entering through a face whose outward normal opposes the direction, leaving through one along it.
+  return face_hit(ray, t, axis, (ray.direction[axis] > 0) == leaving ? 1.0 : -1.0);
+}
+
 template <typename Buffer>
 void Box::gather(const Ray& ray, Buffer& hits) const {
   double t0, t1;
   int axis0, axis1;
   if (!slabs(ray, t0, t1, axis0, axis1)) return;
-  // Entering through a face whose outward normal opposes the direction, leaving through one along it.
-  if (hits.accepts(t0)) hits.add(face_hit(ray, t0, axis0, ray.direction[axis0] > 0 ? -1.0 : 1.0));
-  if (hits.accepts(t1) && t1 != t0) hits.add(face_hit(ray, t1, axis1, ray.direction[axis1] > 0 ? 1.0 : -1.0));
+  if (hits.accepts(t0)) hits.add(slab_hit(ray, t0, axis0, false));
+  if (hits.accepts(t1) && t1 != t0) hits.add(slab_hit(ray, t1, axis1, true));
 }
 
 bool Box::intersect(const Ray& ray, double t_min, double t_max, LocalHit& hit) const {

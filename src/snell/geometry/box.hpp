@@ -23,12 +23,14 @@ class Box final : public Shape {
   const Vec3& lo() const { return lo_; }
   const Vec3& hi() const { return hi_; }
   /// The slab method's entry and exit parameters (t0 <= t1) and the axes of their faces; false on a miss.
-  /// all_hits reports t0, then t1 where it differs, each with face_hit (CSG of boxes reads them so).
+  /// all_hits reports t0, then t1 where it differs, each with slab_hit (CSG of boxes reads them so).
   bool slabs(const Ray& ray, double& t0, double& t1, int& axis0, int& axis1) const;
-  /// The crossing at `t` through the face across `axis` whose outward normal is `sign` along it.
-  LocalHit face_hit(const Ray& ray, double t, int axis, double sign) const;
+  /// The crossing at `t` through the face across `axis` that slabs found, entering or `leaving`.
+  LocalHit slab_hit(const Ray& ray, double t, int axis, bool leaving) const;
 
  private:
+  /// The crossing at `t` through the face across `axis` whose outward normal is `sign` along it.
+  LocalHit face_hit(const Ray& ray, double t, int axis, double sign) const;
   /// Every crossing into `hits` (a HitBuffer<2>, or a NearestBuffer for intersect).
   template <typename Buffer>
   void gather(const Ray& ray, Buffer& hits) const;

@@ -27,8 +27,7 @@ Sextic product(const Cubic& p, const Cubic& q) {
 
 Lathe::Lathe(Outline profile) : profile_(std::move(profile)) {
   radius_ = std::max(std::fabs(profile_.lo().u), std::fabs(profile_.hi().u));
-  band_pad_ = 1e-6 * (1 + 2 * std::max(std::fabs(profile_.lo().v), std::fabs(profile_.hi().v)));
-  reach_ = radius_ * (1 + 1e-6) + band_pad_;
+  reach_ = AxialReach(radius_, std::max(std::fabs(profile_.lo().v), std::fabs(profile_.hi().v)));
 }
 
 Bounds3 Lathe::bounds() const {
@@ -83,10 +82,10 @@ void Lathe::crossings(const Ray& ray, double t_min, const double& t_max, F&& emi
   };
   thread_local std::vector<Band> bands;
   bands.clear();
-  const auto [y_lo, y_hi] = axial.heights_within(reach_, axial.u_of(t_min), axial.u_of(t_max));
+  const auto heights = axial.heights_within(reach_.reach, axial.u_of(t_min), axial.u_of(t_max));
   for (size_t i = 0; i < pieces.size(); ++i) {
     const CurveSegment& piece = pieces[i];
-    if (piece.hi.v + band_pad_ < y_lo || piece.lo.v - band_pad_ > y_hi) continue;
+    if (reach_.skips(heights, piece.lo.v, piece.hi.v)) continue;
     const auto [t0, t1] = axial.band_span(piece.lo.v, piece.hi.v);
     if (t1 <= t_min || t0 >= t_max) continue;
     const double r_max = std::max(std::fabs(piece.lo.u), std::fabs(piece.hi.u));

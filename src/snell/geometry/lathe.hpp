@@ -2,6 +2,7 @@
 // POV-Ray `lathe`: a 2D profile (r, y) of spline pieces revolved around the y axis. A ray meets the
 // surface where r(s)^2 equals the ray's squared distance from the axis at height y(s); eliminating t
 // gives a polynomial of degree up to 6 in s per piece (as in POV-Ray's lathe.cpp).
+#include "snell/geometry/axial_ray.hpp"
 #include "snell/geometry/outline.hpp"
 #include "snell/geometry/shape.hpp"
 
@@ -34,9 +35,7 @@ class Lathe final : public Shape {
 
   Outline profile_;
   double radius_;
-  /// A little beyond radius_, and a pad on the pieces' height bands: a piece out of this reach is one
-  /// its band tests (with their smaller slack) would skip (as Sor's).
-  double reach_, band_pad_;
+  AxialReach reach_;  // for skipping the pieces a ray passes out of reach of
 };
 
 }  // namespace snell::geometry

@@ -44,11 +44,7 @@ Sor::Sor(std::span<const Vec2> p, bool open) : open_(open) {
     piece.r_min = std::sqrt(std::max(0.0, bottom));
     piece.r_max = std::sqrt(std::max(0.0, top));
   }
-  // AxialRay::misses_band widens a band by 1e-9 (1 + |y0| + |y1|) and the ring by a relative 1e-9: a
-  // thousand times that covers both and the rounding of the reach's own heights.
-  const double height = std::max(std::fabs(pieces_.front().y0), std::fabs(pieces_.back().y1));
-  band_pad_ = 1e-6 * (1 + 2 * height);
-  reach_ = radius_ * (1 + 1e-6) + band_pad_;
+  reach_ = AxialReach(radius_, std::max(std::fabs(pieces_.front().y0), std::fabs(pieces_.back().y1)));
 }
 
 Bounds3 Sor::bounds() const {
@@ -104,10 +100,10 @@ void Sor::crossings(const Ray& ray, double t_min, const double& t_max, F&& emit)
   // a band starts beyond t_max, which a nearest-hit caller lowers as it finds hits, no later piece can
   // hold a nearer root.
   const size_t count = pieces_.size();
-  const auto [y_lo, y_hi] = axial.heights_within(reach_, axial.u_of(t_min), axial.u_of(t_max));
+  const auto heights = axial.heights_within(reach_.reach, axial.u_of(t_min), axial.u_of(t_max));
   for (size_t k = 0; k < count; ++k) {
     const Piece& piece = pieces_[dn.y > 0 ? k : count - 1 - k];
-    if (piece.y1 + band_pad_ < y_lo || piece.y0 - band_pad_ > y_hi) continue;
+    if (reach_.skips(heights, piece.y0, piece.y1)) continue;
     const auto [t0, t1] = axial.band_span(piece.y0, piece.y1);
     if (t0 >= t_max) break;
     if (t1 <= t_min) continue;

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "snell/geometry/axial_ray.hpp"
 #include "snell/geometry/shape.hpp"
 
 namespace snell::geometry {
@@ -43,9 +44,7 @@ class Sor final : public Shape {
 
   std::vector<Piece> pieces_;
   double radius_ = 0;
-  /// A little beyond radius_, and a pad on the pieces' height bands, wide enough that a piece skipped
-  /// for being out of this reach is one its band tests (with their smaller slack) would skip.
-  double reach_ = 0, band_pad_ = 0;
+  AxialReach reach_;  // for skipping the pieces a ray passes out of reach of
   bool open_;
 };
 

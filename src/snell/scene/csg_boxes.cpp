@@ -15,10 +15,6 @@ namespace snell::scene {
 
 namespace {
 
-double max_abs(const math::Vec3& v) {
-  return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-}
-
 /// A bound on how far the inverse transform moves magnitudes: its largest row sum plus its translation.
 double inverse_scale(const math::Transform& t) {
   const math::Vec3 cx = t.inverse_vector({1, 0, 0}), cy = t.inverse_vector({0, 1, 0}),
@@ -26,7 +22,7 @@ double inverse_scale(const math::Transform& t) {
   const math::Vec3 rows{std::fabs(cx.x) + std::fabs(cy.x) + std::fabs(cz.x),
                         std::fabs(cx.y) + std::fabs(cy.y) + std::fabs(cz.y),
                         std::fabs(cx.z) + std::fabs(cy.z) + std::fabs(cz.z)};
-  return max_abs(rows) + max_abs(t.inverse_point({0, 0, 0}));
+  return max_component(abs(rows)) + max_component(abs(t.inverse_point({0, 0, 0})));
 }
 
 }  // namespace
@@ -37,14 +33,15 @@ void Csg::find_box_children() {
   for (const auto& c : children_) {
     const auto* box = c->csg || c->motion ? nullptr : dynamic_cast<const geometry::Box*>(c->shape.get());
     if (!box) return;
-    found.push_back({box, inverse_scale(c->transform), std::max(max_abs(box->lo()), max_abs(box->hi()))});
+    found.push_back({box, inverse_scale(c->transform),
+                     std::max(max_component(abs(box->lo())), max_component(abs(box->hi())))});
   }
   box_children_ = std::move(found);
 }
 
 bool Csg::boxes_keep(size_t i, double t, const math::Ray& ray, const math::Ray* local) const {
   const math::Vec3 p = ray.at(t);
-  const double reach = 1 + max_abs(p);
+  const double reach = 1 + max_component(abs(p));
   for (size_t j = 0; j < box_children_.size(); ++j) {
     if (j == i) continue;
     const geometry::Box& box = *box_children_[j].box;
@@ -52,7 +49,7 @@ bool Csg::boxes_keep(size_t i, double t, const math::Ray& ray, const math::Ray* 
     // Rounding in either route to the box's space is below 1e-15 of these magnitudes: a point farther
     // than a millionth of that from every face is where child_inside would find it.
     const double margin =
-        1e-9 * (1 + max_abs(q) + 2 * box_children_[j].size + box_children_[j].scale * reach);
+        1e-9 * (1 + max_component(abs(q)) + 2 * box_children_[j].size + box_children_[j].scale * reach);
     bool within = true, clear = true;
     for (int a = 0; a < 3; ++a) {
       const double below = q[a] - box.lo()[a], above = box.hi()[a] - q[a];
@@ -91,11 +88,7 @@ bool Csg::intersect_boxes(const math::Ray& ray, double t_min, double t_max, Surf
       const double t = k == 0 ? t0 : t1;
       if (!(t > t_min && t < t_max) || !boxes_keep(i, t, ray, local)) continue;
       if (!hit) return true;
-      const int axis = k == 0 ? axis0 : axis1;
-      const bool along = local[i].direction[axis] > 0;
-      // Entering through a face whose outward normal opposes the direction, leaving through one along it.
-      const double sign = (k == 0) == along ? -1.0 : 1.0;
-      *hit = children_[i]->to_world(ray, box.face_hit(local[i], t, axis, sign));
+      *hit = children_[i]->to_world(ray, box.slab_hit(local[i], t, k == 0 ? axis0 : axis1, k == 1));
       t_max = t;
       found = true;
       break;
