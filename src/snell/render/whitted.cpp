@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
+#include <span>
 
 #include "snell/accel/indexed_objects.hpp"
 #include "snell/geometry/mesh.hpp"
@@ -29,10 +31,6 @@ namespace {
 
 /// POV-Ray's EPSILON for "nearly zero" comparisons in trace.cpp.
 constexpr double kEpsilon = 1e-10;
-/// Relative size of the surface offset: intersection routines in double lose a few digits (quadric roots,
-/// transforms), so 1e-9 of the coordinates' magnitude stays well above their error and far below detail.
-constexpr double kRelativeOffset = 1e-9;
-constexpr double kAbsoluteOffset = 1e-9;
 /// How far a ray that hits nothing is taken to go through fog and media (POV-Ray's BOUND_HUGE).
 constexpr double kSkyDepth = 2e10;
 
@@ -104,14 +102,6 @@ void report_own_light(TraceObserver& observer, const Color& colour, const materi
 }
 
 }  // namespace
-
-Vec3 offset_origin(const Vec3& p, const Vec3& side) {
-  const double scale = kAbsoluteOffset + kRelativeOffset * max_component(abs(p));
-  // Callers mostly pass unit normals already: those skip the square root and division.
-  const double length2 = dot(side, side);
-  if (std::fabs(length2 - 1) < 1e-12 || length2 == 0) return p + side * scale;
-  return p + side * (scale / std::sqrt(length2));
-}
 
 WhittedIntegrator::WhittedIntegrator(const scene::Scene& scene, const accel::Accelerator& accelerator)
     : scene_(scene), accel_(accelerator) {
@@ -656,12 +646,14 @@ Color WhittedIntegrator::povray_subsurface_light(const ShadingPoint& sp, const s
 
 TraceContext::ShadowBlocker* WhittedIntegrator::cached_blocker(const scene::Light* source,
                                                                TraceContext& context) const {
-  if (!source || context.observer || scene_.lights.empty()) return nullptr;
-  const auto index = static_cast<size_t>(source - scene_.lights.data());
-  if (source < scene_.lights.data() || index >= scene_.lights.size()) return nullptr;
-  if (context.shadow_blockers.size() != scene_.lights.size())
-    context.shadow_blockers.assign(scene_.lights.size(), {});
-  return &context.shadow_blockers[index];
+  if (!source || context.observer) return nullptr;
+  const std::span<const scene::Light> lights(scene_.lights);
+  // By address, so a light that is not one of the scene's (a test's own) has no entry.
+  if (std::less<>{}(source, lights.data()) || !std::less<>{}(source, lights.data() + lights.size()))
+    return nullptr;
+  if (context.shadow_blockers.size() != lights.size()) [[unlikely]]
+    context.shadow_blockers.assign(lights.size(), {});
+  return &context.shadow_blockers[static_cast<size_t>(source - lights.data())];
 }
 
 namespace {

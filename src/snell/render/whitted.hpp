@@ -4,6 +4,7 @@
 // specular, metallic highlights, reflection (min/max, fresnel, falloff, exponent, metallic), refraction
 // with total internal reflection, filter/transmit and filtered shadows, termination by max_trace_level
 // and adc_bailout. Area lights with POV-Ray's adaptive grid; caustics from a photon map.
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -129,6 +130,16 @@ class WhittedIntegrator final : public Integrator {
 
 /// Origin for a ray leaving surface point `p` towards the side `side` points to: moved off the surface by
 /// an epsilon that scales with the magnitude of p, since the hit point's floating-point error does.
-math::Vec3 offset_origin(const math::Vec3& p, const math::Vec3& side);
+/// Inline: every shadow ray starts here, and the call cost as much as the work.
+inline math::Vec3 offset_origin(const math::Vec3& p, const math::Vec3& side) {
+  // Intersection routines in double lose a few digits (quadric roots, transforms), so 1e-9 of the
+  // coordinates' magnitude stays well above their error and far below detail.
+  constexpr double kRelativeOffset = 1e-9, kAbsoluteOffset = 1e-9;
+  const double scale = kAbsoluteOffset + kRelativeOffset * max_component(abs(p));
+  // Callers mostly pass unit normals already: those skip the square root and division.
+  const double length2 = dot(side, side);
+  if (std::fabs(length2 - 1) < 1e-12 || length2 == 0) return p + side * scale;
+  return p + side * (scale / std::sqrt(length2));
+}
 
 }  // namespace snell::render
